@@ -1,0 +1,301 @@
+"""The `sovarc` command line."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Callable, Sequence
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+
+from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.pipeline import STAGE_NAMES, Options, entry_stage, run_pipeline
+from sovarc.compiler.scenario_io import dump_scenario, load_scenario
+from sovarc.dsl import Severity, SovarcError, diff, json_schema, to_text, verify
+from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE
+from sovarc.dsl.span import Source
+
+try:
+    __version__ = version("sovarc")
+except PackageNotFoundError:  # running from a source tree that is not installed
+    __version__ = "0+unknown"
+
+DESCRIPTION = """\
+sovarc compiles a police crash report into executable driving-test scenarios.
+
+  report.txt --extract--> scenario IR (.sov) --lower--> plan --synthesize--> trajectories --emit--> targets
+
+The main job takes a report (or a .sov scenario) and a target:
+  sovarc examples/scenarios/intersection_left_turn_side.sov          parse, verify, print the IR
+  sovarc FILE.sov --dump-ir-after=parse                               show the IR after one stage
+
+Tools for the scenario IR:
+  sovarc check examples/scenarios/*.sov     report every error and warning, compiler style
+  sovarc fmt --check examples/scenarios/*.sov
+  sovarc diff old.sov new.sov               what changed, by meaning
+  sovarc convert FILE.sov -o FILE.json      the JSON form, and back
+  sovarc schema                             the JSON Schema of the JSON form
+
+Exit codes: 0 success; 1 the input is wrong (syntax, semantics, unreadable file,
+unformatted file under --check); 2 the command line is wrong.
+"""
+
+COMMANDS: dict[str, str] = {
+    "run": "the main job: compile a report or scenario (the default command)",
+    "check": "parse and verify scenarios; print every error and warning",
+    "fmt": "rewrite scenarios in canonical form",
+    "diff": "print what changed between two scenarios, by meaning",
+    "convert": "convert a scenario between .sov text and its JSON form",
+    "schema": "print the JSON Schema of the scenario IR's JSON form",
+}
+
+
+class UsageError(Exception):
+    """A mistake on the command line (exit 2), as opposed to in the input (exit 1)."""
+
+
+def _formatter(prog: str) -> argparse.HelpFormatter:
+    return argparse.RawDescriptionHelpFormatter(prog, max_help_position=32)
+
+
+def _build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="sovarc", description=DESCRIPTION, formatter_class=_formatter)
+    parser.add_argument("--version", action="version", version=f"sovarc {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+
+    run = sub.add_parser("run", help=COMMANDS["run"], formatter_class=_formatter, description=(
+        "Compile one input through the pipeline.\n\n"
+        f"Stages, in order: {', '.join(STAGE_NAMES)}.\n\n"
+        "examples:\n"
+        "  sovarc examples/scenarios/straight_rear_end.sov\n"
+        "  sovarc scenario.sov --dump-ir-after=parse\n"
+        "  sovarc scenario.sov -o checked.sov"))
+    run.add_argument("input", help="a crash report (.txt) or a scenario (.sov)")
+    run.add_argument("-t", "--target", help="target to emit (none are built yet)")
+    run.add_argument("-o", "--output", help="write the final IR here instead of standard output")
+    run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
+    run.add_argument("--dump-ir-after", choices=STAGE_NAMES, metavar="STAGE", action="append", default=[],
+                     help="print the IR after STAGE (repeatable)")
+    run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
+
+    check = sub.add_parser("check", help=COMMANDS["check"], formatter_class=_formatter, description=(
+        "Parse and verify scenario files (.sov or .json). Errors print as\n"
+        "file:line:col, the source line and a caret.\n\n"
+        "examples:\n  sovarc check examples/scenarios/*.sov\n  sovarc check --strict my.sov"))
+    check.add_argument("files", nargs="+", metavar="FILE")
+    check.add_argument("--strict", action="store_true", help="treat warnings as errors")
+
+    fmt = sub.add_parser("fmt", help=COMMANDS["fmt"], formatter_class=_formatter, description=(
+        "Rewrite .sov files in canonical form, in place. Files already canonical are\n"
+        "left untouched; each rewrite is atomic.\n\n"
+        "examples:\n  sovarc fmt examples/scenarios/*.sov\n"
+        "  sovarc fmt --check examples/scenarios/*.sov   (CI: exit 1 if any would change)"))
+    fmt.add_argument("files", nargs="+", metavar="FILE")
+    fmt.add_argument("--check", action="store_true", help="change nothing; exit 1 if a file is not canonical")
+
+    dif = sub.add_parser("diff", help=COMMANDS["diff"], formatter_class=_formatter, description=(
+        "Compare two scenarios by meaning: comments and layout are ignored, and a\n"
+        "changed action reads 'V2 action 2: turn_left → go_across'.\n\n"
+        "examples:\n  sovarc diff before.sov after.sov\n  sovarc diff --json a.sov b.json"))
+    dif.add_argument("old", metavar="OLD")
+    dif.add_argument("new", metavar="NEW")
+    dif.add_argument("--json", action="store_true", help="print the changes as JSON")
+    dif.add_argument("--exit-code", action="store_true", help="exit 1 when the scenarios differ")
+
+    conv = sub.add_parser("convert", help=COMMANDS["convert"], formatter_class=_formatter, description=(
+        "Convert a scenario between its text (.sov) and JSON (.json) forms.\n"
+        "The output form follows -o's extension, or --to.\n\n"
+        "examples:\n  sovarc convert a.sov -o a.json\n  sovarc convert a.json --to sov"))
+    conv.add_argument("file", metavar="FILE")
+    conv.add_argument("-o", "--output", help="output file (default: standard output)")
+    conv.add_argument("--to", choices=("sov", "json"), help="output form when -o does not say")
+
+    sub.add_parser("schema", help=COMMANDS["schema"], formatter_class=_formatter, description=(
+        "Print the JSON Schema (draft 2020-12) of the scenario IR's JSON form.\n\n"
+        "example:\n  sovarc schema > scenario.schema.json"))
+    return parser
+
+
+class _Reporter:
+    """Prints diagnostics with their source lines, and remembers whether any was an error."""
+
+    def __init__(self) -> None:
+        self.failed = False
+
+    def error(self, exc: SovarcError, source: Source | None = None) -> None:
+        self.failed = True
+        print(exc.render({source.name: source} if source else None), file=sys.stderr)
+
+    def diagnostics(self, found: Sequence, source: Source, strict: bool = False) -> None:
+        for d in found:
+            if d.severity is Severity.ERROR or strict:
+                self.failed = True
+            print(d.render({source.name: source}), file=sys.stderr)
+
+
+def _cmd_run(args: argparse.Namespace) -> int:
+    if args.target:
+        raise UsageError(f"unknown target '{args.target}'; no targets are built yet")
+    from sovarc.dsl import read_source
+
+    start = entry_stage(args.input)
+    source = read_source(args.input, "scenario file")
+
+    def after(stage, value):
+        if stage.name in args.dump_ir_after:
+            print(f"// ----- IR after {stage.name} -----")
+            print(stage.render(value), end="")
+
+    try:
+        result, log = run_pipeline(source, start=start, stop=args.stop_after,
+                                   options=Options(seed=args.seed), after_stage=after)
+    except SovarcError as exc:
+        print(exc.render({source.name: source}), file=sys.stderr)
+        return EXIT_INPUT
+    for warning in log.warnings:
+        print(warning.render({source.name: source}), file=sys.stderr)
+    text = to_text(result)
+    if args.output:
+        write_atomic(args.output, text)
+    elif not args.dump_ir_after:
+        print(text, end="")
+    return EXIT_OK
+
+
+def _cmd_check(args: argparse.Namespace) -> int:
+    reporter = _Reporter()
+    ok = 0
+    for name in args.files:
+        try:
+            scenario, source = load_scenario(name)
+        except SovarcError as exc:
+            reporter.error(exc, _source_of(exc, name))
+            continue
+        found = verify(scenario)
+        reporter.diagnostics(found, source, args.strict)
+        if not any(d.severity is Severity.ERROR for d in found):
+            ok += 1
+    print(f"{ok} of {len(args.files)} file(s) ok", file=sys.stderr)
+    return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
+def _source_of(exc: SovarcError, name: str) -> Source | None:
+    """The file's text, for quoting it under a diagnostic, when it can be read at all."""
+    try:
+        from sovarc.dsl import read_source
+
+        return read_source(name)
+    except SovarcError:
+        return None
+
+
+def _cmd_fmt(args: argparse.Namespace) -> int:
+    reporter = _Reporter()
+    changed = 0
+    for name in args.files:
+        try:
+            scenario, source = load_scenario(name)
+        except SovarcError as exc:
+            reporter.error(exc, _source_of(exc, name))
+            continue
+        if Path(name).suffix.lower() == ".json":
+            reporter.failed = True
+            print(f"{name}: fmt rewrites .sov text; use `sovarc convert` for JSON", file=sys.stderr)
+            continue
+        text = to_text(scenario)
+        if text == source.text:
+            continue
+        changed += 1
+        if args.check:
+            print(f"would reformat {name}", file=sys.stderr)
+        else:
+            write_atomic(name, text)
+            print(f"reformatted {name}", file=sys.stderr)
+    verb = "would be reformatted" if args.check else "reformatted"
+    print(f"{changed} file(s) {verb}, {len(args.files) - changed} unchanged", file=sys.stderr)
+    if args.check and changed:
+        return EXIT_INPUT
+    return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
+def _cmd_diff(args: argparse.Namespace) -> int:
+    reporter = _Reporter()
+    loaded = []
+    for name in (args.old, args.new):
+        try:
+            loaded.append(load_scenario(name)[0])
+        except SovarcError as exc:
+            reporter.error(exc, _source_of(exc, name))
+    if reporter.failed:
+        return EXIT_INPUT
+    changes = diff(loaded[0], loaded[1])
+    if args.json:
+        print(json.dumps([c.to_json() for c in changes], indent=2, ensure_ascii=False))
+    elif changes:
+        print("\n".join(c.message for c in changes))
+    else:
+        print("no semantic changes")
+    return EXIT_INPUT if (args.exit_code and changes) else EXIT_OK
+
+
+def _cmd_convert(args: argparse.Namespace) -> int:
+    form = args.to or (Path(args.output).suffix.lstrip(".").lower() if args.output else None)
+    if form not in ("sov", "json"):
+        raise UsageError("say which form to write: -o FILE.sov / -o FILE.json, or --to sov|json")
+    try:
+        scenario, _ = load_scenario(args.file)
+    except SovarcError as exc:
+        _Reporter().error(exc, _source_of(exc, args.file))
+        return EXIT_INPUT
+    text = dump_scenario(scenario, as_json=form == "json")
+    if args.output:
+        write_atomic(args.output, text)
+    else:
+        print(text, end="")
+    return EXIT_OK
+
+
+def _cmd_schema(args: argparse.Namespace) -> int:
+    print(json.dumps(json_schema(), indent=2, ensure_ascii=False))
+    return EXIT_OK
+
+
+HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
+    "run": _cmd_run,
+    "check": _cmd_check,
+    "fmt": _cmd_fmt,
+    "diff": _cmd_diff,
+    "convert": _cmd_convert,
+    "schema": _cmd_schema,
+}
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    # `sovarc REPORT -t TARGET` is the main job: a first word that is no command means `run`.
+    if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
+        argv.insert(0, "run")
+    parser = _build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
+        return int(exc.code or 0)
+    if args.command is None:
+        parser.print_help()
+        return EXIT_USAGE
+    try:
+        return HANDLERS[args.command](args)
+    except UsageError as exc:
+        print(f"sovarc: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except SovarcError as exc:
+        print(exc.render(), file=sys.stderr)
+        return EXIT_INPUT
+    except KeyboardInterrupt:
+        print("sovarc: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,246 @@
+"""The scenario IR: what a crash report says, and nothing about any map.
+
+Nodes are frozen dataclasses. Each carries a `meta` (source span, spans of its
+fields, attached comments) that equality, hashing and the JSON form ignore, so
+two scenarios are equal exactly when they state the same facts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from enum import Enum, StrEnum
+from types import MappingProxyType
+from typing import Literal, TypeVar
+
+from sovarc.dsl.span import Span
+
+T = TypeVar("T", bound=str)
+
+
+class Unknown(Enum):
+    """A fact the report does not state. Written `unknown`, never guessed."""
+
+    UNKNOWN = "unknown"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+UNKNOWN = Unknown.UNKNOWN
+
+
+class Weather(StrEnum):
+    CLEAR = "clear"
+    CLOUDY = "cloudy"
+    FOGGY = "foggy"
+    RAINY = "rainy"
+    SNOWY = "snowy"
+    SUNNY = "sunny"
+    WINDY = "windy"
+
+
+class Lighting(StrEnum):
+    DARK = "dark"
+    DAYLIGHT = "daylight"
+    STREET_LIGHTS = "street_lights"  # road lit by lamps; usually together with dark
+
+
+class RoadKind(StrEnum):
+    INTERSECTION = "intersection"  # four-way crossing
+    T_JUNCTION = "t_junction"  # also Y and other three-way junctions
+    STRAIGHT = "straight"  # a road segment away from junctions
+
+
+class SpeedUnit(StrEnum):
+    KMH = "km/h"
+    MPH = "mph"
+
+
+class Heading(StrEnum):
+    NORTH = "north"
+    EAST = "east"
+    SOUTH = "south"
+    WEST = "west"
+
+
+class Role(StrEnum):
+    VEHICLE = "vehicle"
+    PEDESTRIAN = "pedestrian"
+
+
+class Side(StrEnum):
+    LEFT = "left"
+    RIGHT = "right"
+
+
+class ActionKind(StrEnum):
+    FOLLOW_LANE = "follow_lane"
+    TURN_LEFT = "turn_left"
+    TURN_RIGHT = "turn_right"
+    CHANGE_LANE = "change_lane"
+    GO_ACROSS = "go_across"
+    STOP = "stop"
+    U_TURN = "u_turn"
+    DRIVE_INTO = "drive_into"
+    DRIVE_OFF = "drive_off"
+    RETROGRADE = "retrograde"
+    CROSS = "cross"
+    WALK = "walk"
+
+
+class CrashType(StrEnum):
+    REAR_END = "rear_end"  # striker's front into the victim's rear, same heading
+    FRONTAL = "frontal"  # front to front, opposing headings
+    SIDE = "side"  # striker's front into the victim's side
+
+
+@dataclass(frozen=True)
+class ActionSpec:
+    """What an action means and which arguments it takes; the one table the verifier,
+    the JSON Schema and the prompts read."""
+
+    roles: frozenset[Role]
+    to: Literal["required", "optional", "none"]
+    meaning: str
+
+
+_VEHICLE = frozenset({Role.VEHICLE})
+_PEDESTRIAN = frozenset({Role.PEDESTRIAN})
+
+ACTION_SPECS: Mapping[ActionKind, ActionSpec] = MappingProxyType({
+    ActionKind.FOLLOW_LANE: ActionSpec(_VEHICLE, "none", "keep driving in the current lane"),
+    ActionKind.TURN_LEFT: ActionSpec(_VEHICLE, "optional", "turn left at a junction or into a road; `to` is the lane entered"),
+    ActionKind.TURN_RIGHT: ActionSpec(_VEHICLE, "optional", "turn right at a junction or into a road; `to` is the lane entered"),
+    ActionKind.CHANGE_LANE: ActionSpec(_VEHICLE, "required", "move to lane `to` (a number, or left/right when only the side is known)"),
+    ActionKind.GO_ACROSS: ActionSpec(_VEHICLE, "none", "drive straight through a junction"),
+    ActionKind.STOP: ActionSpec(_VEHICLE, "none", "slow to a standstill and stay stopped"),
+    ActionKind.U_TURN: ActionSpec(_VEHICLE, "optional", "turn around into the opposite direction; `to` is the lane entered"),
+    ActionKind.DRIVE_INTO: ActionSpec(_VEHICLE, "none", "enter the road from a driveway, parking lot or shoulder"),
+    ActionKind.DRIVE_OFF: ActionSpec(_VEHICLE, "none", "leave the road to a driveway, parking lot or shoulder"),
+    ActionKind.RETROGRADE: ActionSpec(_VEHICLE, "none", "drive in a lane of the opposite direction, e.g. across a double yellow line"),
+    ActionKind.CROSS: ActionSpec(_PEDESTRIAN, "none", "walk across the road"),
+    ActionKind.WALK: ActionSpec(_PEDESTRIAN, "none", "walk along the road"),
+})
+
+
+def _no_spans() -> Mapping[str, Span]:
+    return MappingProxyType({})
+
+
+@dataclass(frozen=True)
+class Trivia:
+    """Comments around one printed line: own lines before it, one after it on the line,
+    and (for blocks) own lines before the closing brace."""
+
+    leading: tuple[str, ...] = ()
+    trailing: str | None = None
+    closing: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Meta:
+    """Where a node came from. Ignored by equality: it is not a fact of the scenario."""
+
+    span: Span | None = None
+    fields: Mapping[str, Span] = field(default_factory=_no_spans)
+    comments: Mapping[str, Trivia] = field(default_factory=_no_spans)
+
+    def where(self, name: str | None = None) -> Span | None:
+        """The span of field `name` if it was written, else of the whole node."""
+        return self.fields.get(name, self.span) if name else self.span
+
+
+def _meta() -> Meta:
+    return Meta()
+
+
+def _as_set(values: tuple[T, ...]) -> tuple[T, ...]:
+    return tuple(sorted(set(values)))
+
+
+META = field(default_factory=_meta, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True)
+class Speed:
+    value: float
+    unit: SpeedUnit
+
+    def to_mps(self) -> float:
+        return self.value / 3.6 if self.unit is SpeedUnit.KMH else self.value * 0.44704
+
+
+@dataclass(frozen=True)
+class Provenance:
+    report: str | Unknown = UNKNOWN
+    sha256: str | Unknown = UNKNOWN
+    frontend: str | Unknown = UNKNOWN
+    model: str | Unknown = UNKNOWN
+    assumed: tuple[str, ...] = ()  # dotted paths of facts filled in by the defaults pass
+    meta: Meta = META
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "assumed", _as_set(self.assumed))
+
+
+@dataclass(frozen=True)
+class Environment:
+    weather: tuple[Weather, ...] | Unknown = UNKNOWN
+    lighting: tuple[Lighting, ...] | Unknown = UNKNOWN
+    meta: Meta = META
+
+    def __post_init__(self) -> None:
+        # Sets, not sequences: keep them sorted so that equality ignores order.
+        for name in ("weather", "lighting"):
+            value = getattr(self, name)
+            if not isinstance(value, Unknown):
+                object.__setattr__(self, name, _as_set(value))
+
+
+@dataclass(frozen=True)
+class Road:
+    kind: RoadKind | Unknown = UNKNOWN
+    lanes: int | Unknown = UNKNOWN  # widest road, both directions together
+    speed_limit: Speed | Unknown = UNKNOWN
+    meta: Meta = META
+
+
+@dataclass(frozen=True)
+class Action:
+    kind: ActionKind
+    to: int | Side | None = None  # target lane, for the actions whose spec allows it
+    meta: Meta = META
+
+
+@dataclass(frozen=True)
+class Participant:
+    id: str
+    role: Role
+    heading: Heading | Unknown = UNKNOWN
+    lane: int | Unknown = UNKNOWN  # counted from the right-most lane of its direction, from 1
+    speed: Speed | Unknown = UNKNOWN
+    actions: tuple[Action, ...] = ()
+    meta: Meta = META
+
+
+@dataclass(frozen=True)
+class Crash:
+    type: CrashType | Unknown = UNKNOWN
+    striker: str | Unknown = UNKNOWN
+    victim: str | Unknown = UNKNOWN
+    meta: Meta = META
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    provenance: Provenance | None = None
+    environment: Environment = field(default_factory=Environment)
+    road: Road = field(default_factory=Road)
+    participants: tuple[Participant, ...] = ()
+    crash: Crash = field(default_factory=Crash)
+    meta: Meta = META
+
+    def participant(self, pid: str) -> Participant | None:
+        return next((p for p in self.participants if p.id == pid), None)

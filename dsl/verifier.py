@@ -1,0 +1,135 @@
+"""Semantic rules of a scenario: the checks a grammar cannot make.
+
+Each rule is one small function yielding diagnostics with the span of the
+offending fact; `verify` runs them all so the user sees every problem at once.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterator
+from dataclasses import fields
+
+from sovarc.dsl.errors import Diagnostic, Severity, VerifyError
+from sovarc.dsl.ir import ACTION_SPECS, ActionKind, Scenario, Side, Unknown
+
+Rule = Callable[[Scenario], Iterator[Diagnostic]]
+
+_SHA256 = re.compile(r"[0-9a-f]{64}")
+
+
+def _has_participants(s: Scenario) -> Iterator[Diagnostic]:
+    if not s.participants:
+        yield Diagnostic("the scenario has no participants", s.meta.span,
+                         hint="add a `vehicle V1 { ... }` or `pedestrian P1 { ... }` block")
+
+
+def _unique_ids(s: Scenario) -> Iterator[Diagnostic]:
+    seen: dict[str, int] = {}
+    for p in s.participants:
+        if p.id in seen:
+            first = s.participants[seen[p.id]].meta.span
+            yield Diagnostic(f"participant '{p.id}' is defined twice", p.meta.span,
+                             hint=f"first defined at line {first.line}" if first else None)
+        seen.setdefault(p.id, s.participants.index(p))
+
+
+def _crash_pair(s: Scenario) -> Iterator[Diagnostic]:
+    c, ids = s.crash, [p.id for p in s.participants]
+    for role in ("striker", "victim"):
+        pid = getattr(c, role)
+        if isinstance(pid, Unknown):
+            if len(s.participants) > 1:
+                yield Diagnostic(f"the crash {role} is unknown", c.meta.where(role), Severity.WARNING)
+        elif pid not in ids:
+            yield Diagnostic(f"crash {role} '{pid}' is not a participant", c.meta.where(role),
+                             hint="participants: " + (", ".join(ids) or "none"))
+    if not isinstance(c.striker, Unknown) and c.striker == c.victim:
+        yield Diagnostic(f"'{c.striker}' cannot strike itself: striker and victim must differ",
+                         c.meta.where("victim"))
+
+
+def _speeds_positive(s: Scenario) -> Iterator[Diagnostic]:
+    limit = s.road.speed_limit
+    if not isinstance(limit, Unknown) and limit.value <= 0:
+        yield Diagnostic("the speed limit must be positive", s.road.meta.where("speed_limit"))
+
+
+def _lanes_in_road(s: Scenario) -> Iterator[Diagnostic]:
+    lanes = s.road.lanes
+    if isinstance(lanes, Unknown):
+        return
+    for p in s.participants:
+        if not isinstance(p.lane, Unknown) and p.lane > lanes:
+            yield Diagnostic(f"{p.id} starts in lane {p.lane}, but the road has {lanes} lanes",
+                             p.meta.where("lane"), hint="lanes are counted from the right-most lane, from 1")
+        for a in p.actions:
+            if isinstance(a.to, int) and a.to > lanes:
+                yield Diagnostic(f"{p.id} {a.kind} targets lane {a.to}, but the road has {lanes} lanes",
+                                 a.meta.where("to"))
+
+
+def _actions_fit(s: Scenario) -> Iterator[Diagnostic]:
+    for p in s.participants:
+        if not p.actions:
+            yield Diagnostic(f"{p.id} has no actions", p.meta.where("actions"),
+                             hint="use follow_lane for a participant that just drives on")
+        for a in p.actions:
+            spec = ACTION_SPECS[a.kind]
+            if p.role not in spec.roles:
+                allowed = " or ".join(sorted(r.value for r in spec.roles))
+                yield Diagnostic(f"{a.kind} is an action of a {allowed}, but {p.id} is a {p.role}",
+                                 a.meta.span)
+            if spec.to == "required" and a.to is None:
+                yield Diagnostic(f"{a.kind} needs a target lane", a.meta.span,
+                                 hint=f"write {a.kind}(to: N) with the lane number, or left/right")
+            elif spec.to == "none" and a.to is not None:
+                yield Diagnostic(f"{a.kind} takes no target lane", a.meta.where("to"))
+            elif isinstance(a.to, Side) and a.kind is not ActionKind.CHANGE_LANE:
+                yield Diagnostic(f"{a.kind}(to: ...) takes a lane number, not a side", a.meta.where("to"))
+
+
+def _sha256_form(s: Scenario) -> Iterator[Diagnostic]:
+    p = s.provenance
+    if p is not None and not isinstance(p.sha256, Unknown) and not _SHA256.fullmatch(p.sha256):
+        yield Diagnostic("sha256 must be 64 lower-case hex digits", p.meta.where("sha256"))
+
+
+def _assumed_paths(s: Scenario) -> Iterator[Diagnostic]:
+    p = s.provenance
+    if p is None:
+        return
+    nodes = {"road": s.road, "environment": s.environment, "crash": s.crash}
+    nodes.update({q.id: q for q in s.participants})
+    for path in p.assumed:
+        head, _, rest = path.partition(".")
+        node = nodes.get(head)
+        if node is None or rest not in {f.name for f in fields(node)} - {"meta"}:
+            yield Diagnostic(f"assumed fact '{path}' names no field of this scenario", p.meta.where("assumed"))
+
+
+RULES: tuple[Rule, ...] = (
+    _has_participants,
+    _unique_ids,
+    _crash_pair,
+    _speeds_positive,
+    _lanes_in_road,
+    _actions_fit,
+    _sha256_form,
+    _assumed_paths,
+)
+
+
+def verify(scenario: Scenario) -> list[Diagnostic]:
+    """Every diagnostic of every rule, in source order."""
+    found = [d for rule in RULES for d in rule(scenario)]
+    return sorted(found, key=lambda d: (d.span is None, d.span or ("", 0, 0)))
+
+
+def verify_or_raise(scenario: Scenario) -> list[Diagnostic]:
+    """Raise VerifyError if any rule found an error; return the warnings otherwise."""
+    found = verify(scenario)
+    errors = [d for d in found if d.severity is Severity.ERROR]
+    if errors:
+        raise VerifyError(found)
+    return found
