@@ -64,56 +64,98 @@ def _build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"sovarc {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
-    run = sub.add_parser("run", help=COMMANDS["run"], formatter_class=_formatter, description=(
-        "Compile one input through the pipeline.\n\n"
-        f"Stages, in order: {', '.join(STAGE_NAMES)}.\n\n"
-        "examples:\n"
-        "  sovarc examples/scenarios/straight_rear_end.sov\n"
-        "  sovarc scenario.sov --dump-ir-after=parse\n"
-        "  sovarc scenario.sov -o checked.sov"))
+    run = sub.add_parser(
+        "run",
+        help=COMMANDS["run"],
+        formatter_class=_formatter,
+        description=(
+            "Compile one input through the pipeline.\n\n"
+            f"Stages, in order: {', '.join(STAGE_NAMES)}.\n\n"
+            "examples:\n"
+            "  sovarc examples/scenarios/straight_rear_end.sov\n"
+            "  sovarc scenario.sov --dump-ir-after=parse\n"
+            "  sovarc scenario.sov -o checked.sov"
+        ),
+    )
     run.add_argument("input", help="a crash report (.txt) or a scenario (.sov)")
     run.add_argument("-t", "--target", help="target to emit (none are built yet)")
     run.add_argument("-o", "--output", help="write the final IR here instead of standard output")
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
-    run.add_argument("--dump-ir-after", choices=STAGE_NAMES, metavar="STAGE", action="append", default=[],
-                     help="print the IR after STAGE (repeatable)")
+    run.add_argument(
+        "--dump-ir-after",
+        choices=STAGE_NAMES,
+        metavar="STAGE",
+        action="append",
+        default=[],
+        help="print the IR after STAGE (repeatable)",
+    )
     run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
 
-    check = sub.add_parser("check", help=COMMANDS["check"], formatter_class=_formatter, description=(
-        "Parse and verify scenario files (.sov or .json). Errors print as\n"
-        "file:line:col, the source line and a caret.\n\n"
-        "examples:\n  sovarc check examples/scenarios/*.sov\n  sovarc check --strict my.sov"))
+    check = sub.add_parser(
+        "check",
+        help=COMMANDS["check"],
+        formatter_class=_formatter,
+        description=(
+            "Parse and verify scenario files (.sov or .json). Errors print as\n"
+            "file:line:col, the source line and a caret.\n\n"
+            "examples:\n  sovarc check examples/scenarios/*.sov\n  sovarc check --strict my.sov"
+        ),
+    )
     check.add_argument("files", nargs="+", metavar="FILE")
     check.add_argument("--strict", action="store_true", help="treat warnings as errors")
 
-    fmt = sub.add_parser("fmt", help=COMMANDS["fmt"], formatter_class=_formatter, description=(
-        "Rewrite .sov files in canonical form, in place. Files already canonical are\n"
-        "left untouched; each rewrite is atomic.\n\n"
-        "examples:\n  sovarc fmt examples/scenarios/*.sov\n"
-        "  sovarc fmt --check examples/scenarios/*.sov   (CI: exit 1 if any would change)"))
+    fmt = sub.add_parser(
+        "fmt",
+        help=COMMANDS["fmt"],
+        formatter_class=_formatter,
+        description=(
+            "Rewrite .sov files in canonical form, in place. Files already canonical are\n"
+            "left untouched; each rewrite is atomic.\n\n"
+            "examples:\n  sovarc fmt examples/scenarios/*.sov\n"
+            "  sovarc fmt --check examples/scenarios/*.sov   (CI: exit 1 if any would change)"
+        ),
+    )
     fmt.add_argument("files", nargs="+", metavar="FILE")
     fmt.add_argument("--check", action="store_true", help="change nothing; exit 1 if a file is not canonical")
 
-    dif = sub.add_parser("diff", help=COMMANDS["diff"], formatter_class=_formatter, description=(
-        "Compare two scenarios by meaning: comments and layout are ignored, and a\n"
-        "changed action reads 'V2 action 2: turn_left → go_across'.\n\n"
-        "examples:\n  sovarc diff before.sov after.sov\n  sovarc diff --json a.sov b.json"))
+    dif = sub.add_parser(
+        "diff",
+        help=COMMANDS["diff"],
+        formatter_class=_formatter,
+        description=(
+            "Compare two scenarios by meaning: comments and layout are ignored, and a\n"
+            "changed action reads 'V2 action 2: turn_left → go_across'.\n\n"
+            "examples:\n  sovarc diff before.sov after.sov\n  sovarc diff --json a.sov b.json"
+        ),
+    )
     dif.add_argument("old", metavar="OLD")
     dif.add_argument("new", metavar="NEW")
     dif.add_argument("--json", action="store_true", help="print the changes as JSON")
     dif.add_argument("--exit-code", action="store_true", help="exit 1 when the scenarios differ")
 
-    conv = sub.add_parser("convert", help=COMMANDS["convert"], formatter_class=_formatter, description=(
-        "Convert a scenario between its text (.sov) and JSON (.json) forms.\n"
-        "The output form follows -o's extension, or --to.\n\n"
-        "examples:\n  sovarc convert a.sov -o a.json\n  sovarc convert a.json --to sov"))
+    conv = sub.add_parser(
+        "convert",
+        help=COMMANDS["convert"],
+        formatter_class=_formatter,
+        description=(
+            "Convert a scenario between its text (.sov) and JSON (.json) forms.\n"
+            "The output form follows -o's extension, or --to.\n\n"
+            "examples:\n  sovarc convert a.sov -o a.json\n  sovarc convert a.json --to sov"
+        ),
+    )
     conv.add_argument("file", metavar="FILE")
     conv.add_argument("-o", "--output", help="output file (default: standard output)")
     conv.add_argument("--to", choices=("sov", "json"), help="output form when -o does not say")
 
-    sub.add_parser("schema", help=COMMANDS["schema"], formatter_class=_formatter, description=(
-        "Print the JSON Schema (draft 2020-12) of the scenario IR's JSON form.\n\n"
-        "example:\n  sovarc schema > scenario.schema.json"))
+    sub.add_parser(
+        "schema",
+        help=COMMANDS["schema"],
+        formatter_class=_formatter,
+        description=(
+            "Print the JSON Schema (draft 2020-12) of the scenario IR's JSON form.\n\n"
+            "example:\n  sovarc schema > scenario.schema.json"
+        ),
+    )
     return parser
 
 
@@ -148,8 +190,9 @@ def _cmd_run(args: argparse.Namespace) -> int:
             print(stage.render(value), end="")
 
     try:
-        result, log = run_pipeline(source, start=start, stop=args.stop_after,
-                                   options=Options(seed=args.seed), after_stage=after)
+        result, log = run_pipeline(
+            source, start=start, stop=args.stop_after, options=Options(seed=args.seed), after_stage=after
+        )
     except SovarcError as exc:
         print(exc.render({source.name: source}), file=sys.stderr)
         return EXIT_INPUT

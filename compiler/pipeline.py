@@ -74,7 +74,8 @@ def entry_stage(path: str) -> str:
     if suffix == ".txt":
         raise PipelineError(
             f"{path}: reading crash reports needs the front end (`sovarc extract`), "
-            "which is not built yet; give a .sov scenario instead")
+            "which is not built yet; give a .sov scenario instead"
+        )
     raise PipelineError(f"{path}: unknown input kind '{suffix}'; expected a .sov scenario")
 
 

@@ -97,9 +97,7 @@ def _rebuild(node: Any, path: Path, leading: dict, trailing: dict) -> Any:
         if is_dataclass(value) and hasattr(value, "meta"):
             changes[f.name] = _rebuild(value, (*path, f.name), leading, trailing)
         elif isinstance(value, tuple) and any(hasattr(v, "meta") for v in value):
-            changes[f.name] = tuple(
-                _rebuild(v, (*path, f.name, i), leading, trailing) for i, v in enumerate(value)
-            )
+            changes[f.name] = tuple(_rebuild(v, (*path, f.name, i), leading, trailing) for i, v in enumerate(value))
     trivia: dict[str, Trivia] = {}
     keys = {k for (p, k) in [*leading, *trailing] if p == path}
     for key in keys:
@@ -111,9 +109,7 @@ def _rebuild(node: Any, path: Path, leading: dict, trailing: dict) -> Any:
                 trivia[key] = Trivia(trailing=trailing[(path, key)])
         else:
             old = trivia.get(key, Trivia())
-            trivia[key] = replace(
-                old, leading=tuple(leading.get((path, key), ())), trailing=trailing.get((path, key))
-            )
+            trivia[key] = replace(old, leading=tuple(leading.get((path, key), ())), trailing=trailing.get((path, key)))
     if trivia:
         changes["meta"] = replace(node.meta, comments=trivia)
     return replace(node, **changes) if changes else node

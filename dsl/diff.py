@@ -56,8 +56,14 @@ def _actions(p: Participant, q: Participant) -> list[Change]:
         if op == "replace" and i2 - i1 == j2 - j1:
             for k in range(i2 - i1):
                 n = i1 + k + 1
-                out.append(Change(f"{p.id}.actions[{n}]", old[i1 + k], new[j1 + k],
-                                  f"{p.id} action {n}: {old[i1 + k]} → {new[j1 + k]}"))
+                out.append(
+                    Change(
+                        f"{p.id}.actions[{n}]",
+                        old[i1 + k],
+                        new[j1 + k],
+                        f"{p.id} action {n}: {old[i1 + k]} → {new[j1 + k]}",
+                    )
+                )
             continue
         for i in range(i1, i2):
             out.append(Change(f"{p.id}.actions[{i + 1}]", old[i], None, f"{p.id} action {i + 1}: removed {old[i]}"))
@@ -74,8 +80,14 @@ def diff(a: Scenario, b: Scenario) -> list[Change]:
     pa, pb = a.provenance, b.provenance
     if pa != pb:
         if pa is None or pb is None:
-            out.append(Change("provenance", None if pa is None else "present", None if pb is None else "present",
-                              "provenance: " + ("added" if pa is None else "removed")))
+            out.append(
+                Change(
+                    "provenance",
+                    None if pa is None else "present",
+                    None if pb is None else "present",
+                    "provenance: " + ("added" if pa is None else "removed"),
+                )
+            )
         else:
             out += _node_fields("provenance", pa, pb)
     out += _node_fields("environment", a.environment, b.environment)
@@ -91,12 +103,24 @@ def diff(a: Scenario, b: Scenario) -> list[Change]:
         out += _actions(p, q)
     for q in b.participants:
         if q.id not in old_ids:
-            out.append(Change(q.id, None, q.role.value, f"{q.id}: added ({q.role}, "
-                              + ", ".join(format_action(x) for x in q.actions) + ")"))
+            out.append(
+                Change(
+                    q.id,
+                    None,
+                    q.role.value,
+                    f"{q.id}: added ({q.role}, " + ", ".join(format_action(x) for x in q.actions) + ")",
+                )
+            )
     common_old = [i for i in old_ids if i in new_ids]
     common_new = [i for i in new_ids if i in old_ids]
     if common_old != common_new:
-        out.append(Change("participants", ", ".join(common_old), ", ".join(common_new),
-                          f"participant order: {', '.join(common_old)} → {', '.join(common_new)}"))
+        out.append(
+            Change(
+                "participants",
+                ", ".join(common_old),
+                ", ".join(common_new),
+                f"participant order: {', '.join(common_old)} → {', '.join(common_new)}",
+            )
+        )
     out += _node_fields("crash", a.crash, b.crash)
     return out

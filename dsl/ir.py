@@ -108,20 +108,32 @@ class ActionSpec:
 _VEHICLE = frozenset({Role.VEHICLE})
 _PEDESTRIAN = frozenset({Role.PEDESTRIAN})
 
-ACTION_SPECS: Mapping[ActionKind, ActionSpec] = MappingProxyType({
-    ActionKind.FOLLOW_LANE: ActionSpec(_VEHICLE, "none", "keep driving in the current lane"),
-    ActionKind.TURN_LEFT: ActionSpec(_VEHICLE, "optional", "turn left at a junction or into a road; `to` is the lane entered"),
-    ActionKind.TURN_RIGHT: ActionSpec(_VEHICLE, "optional", "turn right at a junction or into a road; `to` is the lane entered"),
-    ActionKind.CHANGE_LANE: ActionSpec(_VEHICLE, "required", "move to lane `to` (a number, or left/right when only the side is known)"),
-    ActionKind.GO_ACROSS: ActionSpec(_VEHICLE, "none", "drive straight through a junction"),
-    ActionKind.STOP: ActionSpec(_VEHICLE, "none", "slow to a standstill and stay stopped"),
-    ActionKind.U_TURN: ActionSpec(_VEHICLE, "optional", "turn around into the opposite direction; `to` is the lane entered"),
-    ActionKind.DRIVE_INTO: ActionSpec(_VEHICLE, "none", "enter the road from a driveway, parking lot or shoulder"),
-    ActionKind.DRIVE_OFF: ActionSpec(_VEHICLE, "none", "leave the road to a driveway, parking lot or shoulder"),
-    ActionKind.RETROGRADE: ActionSpec(_VEHICLE, "none", "drive in a lane of the opposite direction, e.g. across a double yellow line"),
-    ActionKind.CROSS: ActionSpec(_PEDESTRIAN, "none", "walk across the road"),
-    ActionKind.WALK: ActionSpec(_PEDESTRIAN, "none", "walk along the road"),
-})
+ACTION_SPECS: Mapping[ActionKind, ActionSpec] = MappingProxyType(
+    {
+        ActionKind.FOLLOW_LANE: ActionSpec(_VEHICLE, "none", "keep driving in the current lane"),
+        ActionKind.TURN_LEFT: ActionSpec(
+            _VEHICLE, "optional", "turn left at a junction or into a road; `to` is the lane entered"
+        ),
+        ActionKind.TURN_RIGHT: ActionSpec(
+            _VEHICLE, "optional", "turn right at a junction or into a road; `to` is the lane entered"
+        ),
+        ActionKind.CHANGE_LANE: ActionSpec(
+            _VEHICLE, "required", "move to lane `to` (a number, or left/right when only the side is known)"
+        ),
+        ActionKind.GO_ACROSS: ActionSpec(_VEHICLE, "none", "drive straight through a junction"),
+        ActionKind.STOP: ActionSpec(_VEHICLE, "none", "slow to a standstill and stay stopped"),
+        ActionKind.U_TURN: ActionSpec(
+            _VEHICLE, "optional", "turn around into the opposite direction; `to` is the lane entered"
+        ),
+        ActionKind.DRIVE_INTO: ActionSpec(_VEHICLE, "none", "enter the road from a driveway, parking lot or shoulder"),
+        ActionKind.DRIVE_OFF: ActionSpec(_VEHICLE, "none", "leave the road to a driveway, parking lot or shoulder"),
+        ActionKind.RETROGRADE: ActionSpec(
+            _VEHICLE, "none", "drive in a lane of the opposite direction, e.g. across a double yellow line"
+        ),
+        ActionKind.CROSS: ActionSpec(_PEDESTRIAN, "none", "walk across the road"),
+        ActionKind.WALK: ActionSpec(_PEDESTRIAN, "none", "walk along the road"),
+    }
+)
 
 
 def _no_spans() -> Mapping[str, Span]:

@@ -108,8 +108,9 @@ class _Reader:
 
 
 def _kind(data: Any) -> str:
-    return {dict: "an object", list: "a list", str: "a string", bool: "a boolean",
-            type(None): "null"}.get(type(data), type(data).__name__)
+    return {dict: "an object", list: "a list", str: "a string", bool: "a boolean", type(None): "null"}.get(
+        type(data), type(data).__name__
+    )
 
 
 def _name(tp: Any) -> str:
@@ -117,6 +118,8 @@ def _name(tp: Any) -> str:
         return '"unknown"'
     if tp is _NONE:
         return "null"
+    if isinstance(tp, type) and issubclass(tp, Enum):
+        return ", ".join(m.value for m in tp)
     return getattr(tp, "__name__", str(tp))
 
 
@@ -144,8 +147,7 @@ def _schema_of(tp: Any, defs: dict[str, Any]) -> dict[str, Any]:
         if tp.__name__ not in defs:
             defs[tp.__name__] = {"enum": [m.value for m in tp]}
             if tp.__name__ == "ActionKind":
-                defs[tp.__name__]["description"] = "; ".join(
-                    f"{k.value}: {s.meaning}" for k, s in ACTION_SPECS.items())
+                defs[tp.__name__]["description"] = "; ".join(f"{k.value}: {s.meaning}" for k, s in ACTION_SPECS.items())
         return {"$ref": f"#/$defs/{tp.__name__}"}
     if isinstance(tp, type) and is_dataclass(tp):
         if tp.__name__ not in defs:

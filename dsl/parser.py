@@ -10,6 +10,7 @@ from __future__ import annotations
 import difflib
 import functools
 import json
+import re
 from collections.abc import Iterable
 from dataclasses import fields as dc_fields
 from enum import Enum
@@ -73,6 +74,26 @@ def _lark() -> Lark:
     return Lark(grammar, parser="lalr", propagate_positions=True, maybe_placeholders=False)
 
 
+NAME_PATTERN = re.compile(r"[A-Za-z_][A-Za-z0-9_\-]*")
+
+
+@functools.cache
+def keywords() -> frozenset[str]:
+    """Words the grammar reserves; they cannot serve as names."""
+    words: set[str] = set()
+    for term in _lark().terminals:
+        if term.pattern.type == "str":
+            words.add(term.pattern.value)
+        elif term.name == "ROLE":
+            words.update(("vehicle", "pedestrian"))
+    return frozenset(w for w in words if NAME_PATTERN.fullmatch(w))
+
+
+def is_plain_name(word: str) -> bool:
+    """True if `word` can be written unquoted where the grammar takes a NAME."""
+    return bool(NAME_PATTERN.fullmatch(word)) and word not in keywords() and word != "unknown"
+
+
 def parse(text: str, filename: str = "<string>") -> Scenario:
     """Parse .sov text into a Scenario; raise ParseError with every problem found."""
     try:
@@ -103,14 +124,21 @@ def _syntax_diagnostic(exc: UnexpectedInput, filename: str) -> Diagnostic:
         char = exc.char if exc.char.isprintable() else repr(exc.char)
         return Diagnostic(f"unexpected character '{char}'", Span(filename, line, col, line, col + 1))
     expected: Iterable[str] = getattr(exc, "expected", None) or getattr(exc, "accepts", None) or ()
-    wanted = sorted({_describe(t) for t in expected if not t.startswith("__")})
+    # '/' is only ever the middle of km/h: offering it after every speed misleads.
+    wanted = sorted({_describe(t) for t in expected if not t.startswith("__") and t != "SLASH"})
+    missing_brace = "RBRACE" in expected
     hint = "expected " + (", ".join(wanted[:-1]) + " or " + wanted[-1] if len(wanted) > 1 else "".join(wanted))
     if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":
         tok = exc.token
         span = Span(filename, tok.line, tok.column, tok.end_line or tok.line, tok.end_column or tok.column + 1)
-        return Diagnostic(f"unexpected {_describe(tok.type) if tok.type in _TERMINAL_WORDS else repr(str(tok))}; {hint}", span)
+        brace_hint = "is a '}' missing before this?" if missing_brace and tok.type != "RBRACE" else None
+        return Diagnostic(f"unexpected '{tok}'; {hint}", span, hint=brace_hint)
     if isinstance(exc, UnexpectedEOF | UnexpectedToken):
-        return Diagnostic(f"unexpected end of file; {hint}", Span(filename, line, col, line, col + 1))
+        return Diagnostic(
+            f"unexpected end of file; {hint}",
+            Span(filename, line, col, line, col + 1),
+            hint="the file ends inside a block: is a '}' missing?" if missing_brace else None,
+        )
     return Diagnostic(str(exc).splitlines()[0], Span(filename, line, col, line, col + 1))
 
 
@@ -162,8 +190,11 @@ class _Builder(Transformer[Token, Any]):
             if not isinstance(item, _Field):
                 continue
             if item.name in values:
-                self._error(f"'{item.name}' is written twice in this block", item.span,
-                            f"first written at line {spans[item.name].line}")
+                self._error(
+                    f"'{item.name}' is written twice in this block",
+                    item.span,
+                    f"first written at line {spans[item.name].line}",
+                )
                 continue
             values[item.name] = item.value
             spans[item.name] = item.span
@@ -339,8 +370,9 @@ class _Builder(Transformer[Token, Any]):
                 continue
             key = type(node).__name__.lower()
             if key in sections:
-                self._error(f"'{key}' block is written twice", node.meta.span,
-                            f"first written at line {spans[key].line}")
+                self._error(
+                    f"'{key}' block is written twice", node.meta.span, f"first written at line {spans[key].line}"
+                )
                 continue
             sections[key] = node
             spans[key] = node.meta.span

@@ -22,6 +22,7 @@ from sovarc.dsl.ir import (
     Trivia,
     Unknown,
 )
+from sovarc.dsl.parser import is_plain_name
 
 INDENT = "  "
 
@@ -82,8 +83,12 @@ def _block(w: _Writer, depth: int, header: str, node: object, rows: list[tuple[s
 
 
 def _provenance(w: _Writer, p: Provenance) -> None:
-    rows = [("report", _text(p.report)), ("sha256", _text(p.sha256)),
-            ("frontend", _bare(p.frontend)), ("model", _text(p.model))]
+    rows = [
+        ("report", _text(p.report)),
+        ("sha256", _text(p.sha256)),
+        ("frontend", _bare(p.frontend)),
+        ("model", _text(p.model)),
+    ]
     if p.assumed:
         rows.append(("assumed", ", ".join(p.assumed)))
     _block(w, 1, "provenance", p, rows)
@@ -93,7 +98,7 @@ def _bare(value: str | Unknown) -> str:
     """A word if it is one, else a quoted string."""
     if isinstance(value, Unknown):
         return "unknown"
-    return value if value.replace("_", "a").replace("-", "a").isalnum() and value[0].isalpha() else _text(value)
+    return value if is_plain_name(value) else _text(value)
 
 
 def _environment(w: _Writer, e: Environment) -> None:
@@ -101,15 +106,21 @@ def _environment(w: _Writer, e: Environment) -> None:
 
 
 def _road(w: _Writer, r: Road) -> None:
-    _block(w, 1, "road", r, [("kind", _word(r.kind)), ("lanes", _word(r.lanes)),
-                              ("speed_limit", format_speed(r.speed_limit))])
+    _block(
+        w,
+        1,
+        "road",
+        r,
+        [("kind", _word(r.kind)), ("lanes", _word(r.lanes)), ("speed_limit", format_speed(r.speed_limit))],
+    )
 
 
 def _participant(w: _Writer, p: Participant) -> None:
     comments = p.meta.comments
     w.line(1, f"{p.role} {p.id} {{", comments.get(""))
-    for key, text, trivia in _fields(p, [("heading", _word(p.heading)), ("lane", _word(p.lane)),
-                                         ("speed", format_speed(p.speed))]):
+    for key, text, trivia in _fields(
+        p, [("heading", _word(p.heading)), ("lane", _word(p.lane)), ("speed", format_speed(p.speed))]
+    ):
         w.line(2, f"{key} {text}", trivia)
     w.line(2, "actions {", comments.get("actions"))
     for action in p.actions:
@@ -119,8 +130,7 @@ def _participant(w: _Writer, p: Participant) -> None:
 
 
 def _crash(w: _Writer, c: Crash) -> None:
-    _block(w, 1, "crash", c, [("type", _word(c.type)), ("striker", _word(c.striker)),
-                              ("victim", _word(c.victim))])
+    _block(w, 1, "crash", c, [("type", _word(c.type)), ("striker", _word(c.striker)), ("victim", _word(c.victim))])
 
 
 def to_text(scenario: Scenario) -> str:

@@ -12,6 +12,7 @@ from dataclasses import fields
 
 from sovarc.dsl.errors import Diagnostic, Severity, VerifyError
 from sovarc.dsl.ir import ACTION_SPECS, ActionKind, Scenario, Side, Unknown
+from sovarc.dsl.parser import is_plain_name
 
 Rule = Callable[[Scenario], Iterator[Diagnostic]]
 
@@ -20,8 +21,23 @@ _SHA256 = re.compile(r"[0-9a-f]{64}")
 
 def _has_participants(s: Scenario) -> Iterator[Diagnostic]:
     if not s.participants:
-        yield Diagnostic("the scenario has no participants", s.meta.span,
-                         hint="add a `vehicle V1 { ... }` or `pedestrian P1 { ... }` block")
+        yield Diagnostic(
+            "the scenario has no participants",
+            s.meta.span,
+            hint="add a `vehicle V1 { ... }` or `pedestrian P1 { ... }` block",
+        )
+
+
+def _names_writable(s: Scenario) -> Iterator[Diagnostic]:
+    # IR built from JSON (say, by a model) may carry ids the text form cannot spell.
+    named = [("scenario name", s.name, s.meta.span)] + [("participant id", p.id, p.meta.span) for p in s.participants]
+    for what, name, span in named:
+        if not is_plain_name(name):
+            yield Diagnostic(
+                f"{what} '{name}' is not a plain name",
+                span,
+                hint="use letters, digits, '_' or '-', starting with a letter, and no keyword",
+            )
 
 
 def _unique_ids(s: Scenario) -> Iterator[Diagnostic]:
@@ -29,8 +45,11 @@ def _unique_ids(s: Scenario) -> Iterator[Diagnostic]:
     for p in s.participants:
         if p.id in seen:
             first = s.participants[seen[p.id]].meta.span
-            yield Diagnostic(f"participant '{p.id}' is defined twice", p.meta.span,
-                             hint=f"first defined at line {first.line}" if first else None)
+            yield Diagnostic(
+                f"participant '{p.id}' is defined twice",
+                p.meta.span,
+                hint=f"first defined at line {first.line}" if first else None,
+            )
         seen.setdefault(p.id, s.participants.index(p))
 
 
@@ -42,11 +61,13 @@ def _crash_pair(s: Scenario) -> Iterator[Diagnostic]:
             if len(s.participants) > 1:
                 yield Diagnostic(f"the crash {role} is unknown", c.meta.where(role), Severity.WARNING)
         elif pid not in ids:
-            yield Diagnostic(f"crash {role} '{pid}' is not a participant", c.meta.where(role),
-                             hint="participants: " + (", ".join(ids) or "none"))
+            yield Diagnostic(
+                f"crash {role} '{pid}' is not a participant",
+                c.meta.where(role),
+                hint="participants: " + (", ".join(ids) or "none"),
+            )
     if not isinstance(c.striker, Unknown) and c.striker == c.victim:
-        yield Diagnostic(f"'{c.striker}' cannot strike itself: striker and victim must differ",
-                         c.meta.where("victim"))
+        yield Diagnostic(f"'{c.striker}' cannot strike itself: striker and victim must differ", c.meta.where("victim"))
 
 
 def _speeds_positive(s: Scenario) -> Iterator[Diagnostic]:
@@ -61,28 +82,37 @@ def _lanes_in_road(s: Scenario) -> Iterator[Diagnostic]:
         return
     for p in s.participants:
         if not isinstance(p.lane, Unknown) and p.lane > lanes:
-            yield Diagnostic(f"{p.id} starts in lane {p.lane}, but the road has {lanes} lanes",
-                             p.meta.where("lane"), hint="lanes are counted from the right-most lane, from 1")
+            yield Diagnostic(
+                f"{p.id} starts in lane {p.lane}, but the road has {lanes} lanes",
+                p.meta.where("lane"),
+                hint="lanes are counted from the right-most lane, from 1",
+            )
         for a in p.actions:
             if isinstance(a.to, int) and a.to > lanes:
-                yield Diagnostic(f"{p.id} {a.kind} targets lane {a.to}, but the road has {lanes} lanes",
-                                 a.meta.where("to"))
+                yield Diagnostic(
+                    f"{p.id} {a.kind} targets lane {a.to}, but the road has {lanes} lanes", a.meta.where("to")
+                )
 
 
 def _actions_fit(s: Scenario) -> Iterator[Diagnostic]:
     for p in s.participants:
         if not p.actions:
-            yield Diagnostic(f"{p.id} has no actions", p.meta.where("actions"),
-                             hint="use follow_lane for a participant that just drives on")
+            yield Diagnostic(
+                f"{p.id} has no actions",
+                p.meta.where("actions"),
+                hint="use follow_lane for a participant that just drives on",
+            )
         for a in p.actions:
             spec = ACTION_SPECS[a.kind]
             if p.role not in spec.roles:
                 allowed = " or ".join(sorted(r.value for r in spec.roles))
-                yield Diagnostic(f"{a.kind} is an action of a {allowed}, but {p.id} is a {p.role}",
-                                 a.meta.span)
+                yield Diagnostic(f"{a.kind} is an action of a {allowed}, but {p.id} is a {p.role}", a.meta.span)
             if spec.to == "required" and a.to is None:
-                yield Diagnostic(f"{a.kind} needs a target lane", a.meta.span,
-                                 hint=f"write {a.kind}(to: N) with the lane number, or left/right")
+                yield Diagnostic(
+                    f"{a.kind} needs a target lane",
+                    a.meta.span,
+                    hint=f"write {a.kind}(to: N) with the lane number, or left/right",
+                )
             elif spec.to == "none" and a.to is not None:
                 yield Diagnostic(f"{a.kind} takes no target lane", a.meta.where("to"))
             elif isinstance(a.to, Side) and a.kind is not ActionKind.CHANGE_LANE:
@@ -110,6 +140,7 @@ def _assumed_paths(s: Scenario) -> Iterator[Diagnostic]:
 
 RULES: tuple[Rule, ...] = (
     _has_participants,
+    _names_writable,
     _unique_ids,
     _crash_pair,
     _speeds_positive,

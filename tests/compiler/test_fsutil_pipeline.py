@@ -1,0 +1,71 @@
+"""Atomic writes and the stage runner."""
+
+from __future__ import annotations
+
+import itertools
+import os
+from pathlib import Path
+
+import pytest
+from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.pipeline import PIPELINE, PipelineError, entry_stage, run_pipeline
+from sovarc.dsl import Scenario, VerifyError
+from sovarc.dsl.span import Source
+
+from tests.conftest import EXAMPLES
+
+LEFT_TURN = EXAMPLES / "scenarios" / "intersection_left_turn_across_path_side.sov"
+
+
+def test_write_atomic_replaces_whole_files(tmp_path: Path) -> None:
+    target = tmp_path / "deep" / "out.txt"
+    write_atomic(target, "one")
+    write_atomic(target, b"two")
+    assert target.read_text() == "two"
+    assert os.listdir(target.parent) == ["out.txt"]
+
+
+def test_write_atomic_leaves_nothing_behind_on_failure(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    target = tmp_path / "out.txt"
+    target.write_text("old")
+
+    def broken_replace(src: str, dst: str) -> None:
+        raise OSError("disk full")
+
+    monkeypatch.setattr(os, "replace", broken_replace)
+    with pytest.raises(OSError, match="disk full"):
+        write_atomic(target, "new")
+    assert target.read_text() == "old"
+    assert os.listdir(tmp_path) == ["out.txt"]
+
+
+def test_stages_are_an_ordered_tuple_with_typed_ends() -> None:
+    assert [s.name for s in PIPELINE] == ["parse", "verify"]
+    for before, after in itertools.pairwise(PIPELINE):
+        assert before.produces is after.consumes
+
+
+def test_run_pipeline_reports_each_stage() -> None:
+    seen: list[str] = []
+    source = Source(str(LEFT_TURN), LEFT_TURN.read_text())
+    result, log = run_pipeline(source, start="parse", after_stage=lambda stage, value: seen.append(stage.name))
+    assert isinstance(result, Scenario) and seen == ["parse", "verify"]
+    assert set(log.outputs) == {"parse", "verify"} and log.warnings == []
+
+
+def test_stop_after_and_verification() -> None:
+    source = Source("bad.sov", LEFT_TURN.read_text().replace("lane 2", "lane 7", 1))
+    parsed, _ = run_pipeline(source, start="parse", stop="parse")
+    assert parsed.participants[0].lane == 7
+    with pytest.raises(VerifyError, match="V1 starts in lane 7"):
+        run_pipeline(source, start="parse")
+
+
+def test_bad_stage_names_and_inputs() -> None:
+    with pytest.raises(PipelineError, match="no stage named 'lower'"):
+        run_pipeline(None, start="lower")
+    with pytest.raises(PipelineError, match="comes before"):
+        run_pipeline(None, start="verify", stop="parse")
+    with pytest.raises(PipelineError, match=r"unknown input kind '\.pdf'"):
+        entry_stage("report.pdf")
+    assert entry_stage("a.sov") == "parse"
