@@ -6,15 +6,16 @@ import argparse
 import json
 import sys
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import STAGE_NAMES, Options, entry_stage, run_pipeline
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
-from sovarc.dsl import Severity, SovarcError, diff, json_schema, to_text, verify
-from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE
-from sovarc.dsl.span import Source
+from sovarc.dsl import Severity, SovarcError, diff, json_schema, to_text, verify, verify_or_raise
+from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE, Diagnostic
+from sovarc.dsl.span import Source, Span
 
 try:
     __version__ = version("sovarc")
@@ -48,6 +49,7 @@ COMMANDS: dict[str, str] = {
     "diff": "print what changed between two scenarios, by meaning",
     "convert": "convert a scenario between .sov text and its JSON form",
     "schema": "print the JSON Schema of the scenario IR's JSON form",
+    "import-truth": "convert SoVAR-style ground-truth JSON into .sov scenarios",
 }
 
 
@@ -156,6 +158,25 @@ def _build_parser() -> argparse.ArgumentParser:
             "example:\n  sovarc schema > scenario.schema.json"
         ),
     )
+    imp = sub.add_parser(
+        "import-truth",
+        help=COMMANDS["import-truth"],
+        formatter_class=_formatter,
+        description=(
+            "Convert ground truth in the SoVAR study's JSON form (truth/<category>/<n>.json)\n"
+            "into verified .sov files named <category>_<n>.sov. Every repair made on the\n"
+            "way in (a misspelt word, a lane given to an action that takes none) is printed.\n\n"
+            "examples:\n  sovarc import-truth ../shared/data/nmvccs/truth -o out/truth\n"
+            "  sovarc import-truth truth/t/3.json -o out --reports reports"
+        ),
+    )
+    imp.add_argument("inputs", nargs="+", metavar="TRUTH", help="JSON files, or folders searched for *.json")
+    imp.add_argument("-o", "--output", required=True, help="folder for the .sov files")
+    imp.add_argument(
+        "--reports",
+        help="folder of <category>/<n>.txt reports, recorded as provenance "
+        "(default: a 'reports' folder beside the truth folder)",
+    )
     return parser
 
 
@@ -165,15 +186,23 @@ class _Reporter:
     def __init__(self) -> None:
         self.failed = False
 
-    def error(self, exc: SovarcError, source: Source | None = None) -> None:
+    def error(self, exc: SovarcError, source: Source | None = None, name: str | None = None) -> None:
         self.failed = True
-        print(exc.render({source.name: source} if source else None), file=sys.stderr)
+        for d in exc.diagnostics:
+            self._print(d, source, name)
 
-    def diagnostics(self, found: Sequence, source: Source, strict: bool = False) -> None:
+    def diagnostics(self, found: Sequence[Diagnostic], source: Source, strict: bool = False) -> None:
         for d in found:
             if d.severity is Severity.ERROR or strict:
                 self.failed = True
-            print(d.render({source.name: source}), file=sys.stderr)
+            self._print(d, source, source.name)
+
+    @staticmethod
+    def _print(d: Diagnostic, source: Source | None, name: str | None) -> None:
+        # IR read from JSON has no spans: still say which file the problem is in.
+        if d.span is None and name:
+            d = replace(d, span=Span.whole_file(name))
+        print(d.render({source.name: source} if source else None), file=sys.stderr)
 
 
 def _cmd_run(args: argparse.Namespace) -> int:
@@ -304,7 +333,39 @@ def _cmd_schema(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _cmd_import_truth(args: argparse.Namespace) -> int:
+    from sovarc.compiler.frontend.truth import import_truth_file
+    from sovarc.compiler.progress import progress
+
+    files: list[Path] = []
+    for name in args.inputs:
+        path = Path(name)
+        if path.is_dir():
+            files += sorted(path.rglob("*.json"))
+        else:
+            files.append(path)
+    if not files:
+        raise UsageError("no ground-truth .json files found in " + ", ".join(args.inputs))
+    reporter = _Reporter()
+    written = 0
+    for path in progress(files, len(files), "import-truth"):
+        reports = Path(args.reports) if args.reports else path.parent.parent.parent / "reports"
+        try:
+            imported = import_truth_file(path, reports if reports.is_dir() else None)
+            verify_or_raise(imported.scenario)
+        except SovarcError as exc:
+            reporter.error(exc, _source_of(exc, str(path)), str(path))
+            continue
+        for note in imported.notes:
+            print(f"{path}: note: {note}", file=sys.stderr)
+        write_atomic(Path(args.output) / f"{imported.scenario.name}.sov", to_text(imported.scenario))
+        written += 1
+    print(f"{written} of {len(files)} scenario(s) written to {args.output}", file=sys.stderr)
+    return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
 HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
+    "import-truth": _cmd_import_truth,
     "run": _cmd_run,
     "check": _cmd_check,
     "fmt": _cmd_fmt,

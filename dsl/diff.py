@@ -46,7 +46,15 @@ def _node_fields(prefix: str, a: Any, b: Any, skip: frozenset[str] = frozenset()
     return out
 
 
+def _show_actions(p: Participant) -> str:
+    return "unknown" if isinstance(p.actions, Unknown) else ", ".join(format_action(a) for a in p.actions)
+
+
 def _actions(p: Participant, q: Participant) -> list[Change]:
+    if isinstance(p.actions, Unknown) or isinstance(q.actions, Unknown):
+        if p.actions == q.actions:
+            return []
+        return [_changed(f"{p.id}.actions", f"{p.id} actions", _show_actions(p), _show_actions(q))]
     old, new = [format_action(a) for a in p.actions], [format_action(a) for a in q.actions]
     out: list[Change] = []
     matcher = difflib.SequenceMatcher(a=old, b=new, autojunk=False)
@@ -108,7 +116,7 @@ def diff(a: Scenario, b: Scenario) -> list[Change]:
                     q.id,
                     None,
                     q.role.value,
-                    f"{q.id}: added ({q.role}, " + ", ".join(format_action(x) for x in q.actions) + ")",
+                    f"{q.id}: added ({q.role}, {_show_actions(q)})",
                 )
             )
     common_old = [i for i in old_ids if i in new_ids]

@@ -232,8 +232,12 @@ class Participant:
     heading: Heading | Unknown = UNKNOWN
     lane: int | Unknown = UNKNOWN  # counted from the right-most lane of its direction, from 1
     speed: Speed | Unknown = UNKNOWN
-    actions: tuple[Action, ...] = ()
+    actions: tuple[Action, ...] | Unknown = ()  # unknown: the report does not say what it did
     meta: Meta = META
+
+    @property
+    def known_actions(self) -> tuple[Action, ...]:
+        return () if isinstance(self.actions, Unknown) else self.actions
 
 
 @dataclass(frozen=True)

@@ -339,6 +339,10 @@ class _Builder(Transformer[Token, Any]):
         return Action(kind, to, meta=Meta(self._span(meta), spans))
 
     def actions(self, meta: Any, c: list[Any]) -> _Field:
+        if len(c) == 2 and isinstance(c[1], Token):
+            if str(c[1]) != "unknown":
+                self._error(f"expected '{{' or 'unknown' after actions, got '{c[1]}'", self._tok_span(c[1]))
+            return self._field("actions", meta, UNKNOWN)
         return self._field("actions", meta, tuple(a for a in c[1:] if a is not None))
 
     def participant(self, meta: Any, c: list[Any]) -> Participant:

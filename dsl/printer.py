@@ -122,6 +122,10 @@ def _participant(w: _Writer, p: Participant) -> None:
         p, [("heading", _word(p.heading)), ("lane", _word(p.lane)), ("speed", format_speed(p.speed))]
     ):
         w.line(2, f"{key} {text}", trivia)
+    if isinstance(p.actions, Unknown):
+        w.line(2, "actions unknown", comments.get("actions"))
+        w.close(1, comments.get(""), comments.get("}"))
+        return
     w.line(2, "actions {", comments.get("actions"))
     for action in p.actions:
         w.line(3, format_action(action), action.meta.comments.get(""))

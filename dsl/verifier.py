@@ -87,7 +87,7 @@ def _lanes_in_road(s: Scenario) -> Iterator[Diagnostic]:
                 p.meta.where("lane"),
                 hint="lanes are counted from the right-most lane, from 1",
             )
-        for a in p.actions:
+        for a in p.known_actions:
             if isinstance(a.to, int) and a.to > lanes:
                 yield Diagnostic(
                     f"{p.id} {a.kind} targets lane {a.to}, but the road has {lanes} lanes", a.meta.where("to")
@@ -96,13 +96,13 @@ def _lanes_in_road(s: Scenario) -> Iterator[Diagnostic]:
 
 def _actions_fit(s: Scenario) -> Iterator[Diagnostic]:
     for p in s.participants:
-        if not p.actions:
+        if p.actions == ():
             yield Diagnostic(
                 f"{p.id} has no actions",
                 p.meta.where("actions"),
-                hint="use follow_lane for a participant that just drives on",
+                hint="use follow_lane for a participant that just drives on, or `actions unknown`",
             )
-        for a in p.actions:
+        for a in p.known_actions:
             spec = ACTION_SPECS[a.kind]
             if p.role not in spec.roles:
                 allowed = " or ".join(sorted(r.value for r in spec.roles))

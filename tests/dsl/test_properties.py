@@ -80,7 +80,7 @@ participants = st.builds(
     maybe(st.sampled_from(Heading)),
     maybe(st.integers(1, 9)),
     maybe(speeds),
-    st.lists(actions, max_size=5).map(tuple),
+    maybe(st.lists(actions, max_size=5).map(tuple)),
 )
 paths = st.tuples(names, names).map(".".join)
 provenances = st.one_of(
