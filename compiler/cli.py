@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import replace
@@ -28,8 +29,12 @@ sovarc compiles a police crash report into executable driving-test scenarios.
   report.txt --extract--> scenario IR (.sov) --lower--> plan --synthesize--> trajectories --emit--> targets
 
 The main job takes a report (or a .sov scenario) and a target:
-  sovarc examples/scenarios/intersection_left_turn_side.sov          parse, verify, print the IR
-  sovarc FILE.sov --dump-ir-after=parse                               show the IR after one stage
+  sovarc examples/reports/left_turn_oncoming_pickup.txt       extract, verify, print the IR
+  sovarc examples/scenarios/straight_rear_end_stopped_traffic.sov --dump-ir-after=read
+
+Front end and evaluation:
+  sovarc extract examples/reports/*.txt -o out/          one .sov per report
+  sovarc eval extraction --reports DIR --truth DIR       accuracy per attribute (the paper's Table 3)
 
 Tools for the scenario IR:
   sovarc check examples/scenarios/*.sov     report every error and warning, compiler style
@@ -50,6 +55,8 @@ COMMANDS: dict[str, str] = {
     "convert": "convert a scenario between .sov text and its JSON form",
     "schema": "print the JSON Schema of the scenario IR's JSON form",
     "import-truth": "convert SoVAR-style ground-truth JSON into .sov scenarios",
+    "extract": "read crash reports into .sov scenarios (the front end alone)",
+    "eval": "measure the compiler against ground truth (extraction)",
 }
 
 
@@ -92,6 +99,7 @@ def _build_parser() -> argparse.ArgumentParser:
         help="print the IR after STAGE (repeatable)",
     )
     run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
+    _add_llm(run)
 
     check = sub.add_parser(
         "check",
@@ -177,7 +185,56 @@ def _build_parser() -> argparse.ArgumentParser:
         help="folder of <category>/<n>.txt reports, recorded as provenance "
         "(default: a 'reports' folder beside the truth folder)",
     )
+    ext = sub.add_parser(
+        "extract",
+        help=COMMANDS["extract"],
+        formatter_class=_formatter,
+        description=(
+            "Read crash reports (.txt) into scenarios. With one report and no -o the\n"
+            "scenario is printed; otherwise each report gives DIR/<name>.sov.\n\n"
+            "examples:\n  sovarc extract examples/reports/double_yellow_pass_frontal.txt\n"
+            "  sovarc extract ../shared/data/nmvccs/reports/t/*.txt -o out/t --llm none"
+        ),
+    )
+    ext.add_argument("reports", nargs="+", metavar="REPORT")
+    ext.add_argument("-o", "--output", help="folder for the .sov files")
+    _add_llm(ext)
+
+    ev = sub.add_parser(
+        "eval",
+        help=COMMANDS["eval"],
+        formatter_class=_formatter,
+        description=(
+            "Measure against ground truth.\n\n"
+            "examples:\n  sovarc eval extraction --reports ../shared/data/nmvccs/reports "
+            "--truth ../shared/data/nmvccs/truth"
+        ),
+    )
+    which = ev.add_subparsers(dest="evaluation", metavar="WHAT", required=True)
+    exv = which.add_parser(
+        "extraction",
+        formatter_class=_formatter,
+        help="extraction accuracy per attribute",
+        description="Extract every report that has ground truth (truth/<category>/<n>.json\n"
+        "beside reports/<category>/<n>.txt) and print the accuracy per attribute\n"
+        "in the form of the paper's Table 3, then the failing cases and fields.",
+    )
+    exv.add_argument("--reports", required=True, help="folder of <category>/<n>.txt reports")
+    exv.add_argument("--truth", required=True, help="folder of <category>/<n>.json ground truth")
+    exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
+    _add_llm(exv)
     return parser
+
+
+def _add_llm(parser: argparse.ArgumentParser) -> None:
+    from sovarc.compiler.frontend import LLM_CHOICES
+
+    parser.add_argument(
+        "--llm",
+        default="none",
+        choices=LLM_CHOICES,
+        help="front end for reports: none = deterministic rules only (default for now)",
+    )
 
 
 class _Reporter:
@@ -189,16 +246,16 @@ class _Reporter:
     def error(self, exc: SovarcError, source: Source | None = None, name: str | None = None) -> None:
         self.failed = True
         for d in exc.diagnostics:
-            self._print(d, source, name)
+            self.show(d, source, name)
 
     def diagnostics(self, found: Sequence[Diagnostic], source: Source, strict: bool = False) -> None:
         for d in found:
             if d.severity is Severity.ERROR or strict:
                 self.failed = True
-            self._print(d, source, source.name)
+            self.show(d, source, source.name)
 
     @staticmethod
-    def _print(d: Diagnostic, source: Source | None, name: str | None) -> None:
+    def show(d: Diagnostic, source: Source | None, name: str | None) -> None:
         # IR read from JSON has no spans: still say which file the problem is in.
         if d.span is None and name:
             d = replace(d, span=Span.whole_file(name))
@@ -211,7 +268,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
     from sovarc.dsl import read_source
 
     start = entry_stage(args.input)
-    source = read_source(args.input, "scenario file")
+    source = read_source(args.input, "report or scenario file")
 
     def after(stage, value):
         if stage.name in args.dump_ir_after:
@@ -220,7 +277,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     try:
         result, log = run_pipeline(
-            source, start=start, stop=args.stop_after, options=Options(seed=args.seed), after_stage=after
+            source, start=start, stop=args.stop_after, options=Options(seed=args.seed, llm=args.llm), after_stage=after
         )
     except SovarcError as exc:
         print(exc.render({source.name: source}), file=sys.stderr)
@@ -364,7 +421,72 @@ def _cmd_import_truth(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
+def _cmd_extract(args: argparse.Namespace) -> int:
+    from sovarc.compiler.frontend import extract_report
+    from sovarc.compiler.progress import progress
+    from sovarc.dsl import read_source
+
+    if len(args.reports) > 1 and not args.output:
+        raise UsageError("give -o DIR to extract more than one report")
+    reporter = _Reporter()
+    written = 0
+    for name in progress(args.reports, len(args.reports), "extract"):
+        try:
+            source = read_source(name, "crash report")
+            scenario = extract_report(source, args.llm)
+            warnings = verify_or_raise(scenario)
+        except SovarcError as exc:
+            reporter.error(exc, None, name)
+            continue
+        for w in warnings:
+            reporter.show(w, None, name)
+        if args.output:
+            write_atomic(Path(args.output) / f"{scenario.name}.sov", to_text(scenario))
+        else:
+            print(to_text(scenario), end="")
+        written += 1
+    if args.output:
+        print(f"{written} of {len(args.reports)} scenario(s) written to {args.output}", file=sys.stderr)
+    return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
+def _cmd_eval(args: argparse.Namespace) -> int:
+    from sovarc.compiler.evaluation.extraction import Report
+    from sovarc.compiler.frontend import extract_report
+    from sovarc.compiler.frontend.truth import import_truth_file
+    from sovarc.compiler.progress import progress
+    from sovarc.dsl import read_source
+
+    truths = sorted(Path(args.truth).glob("*/*.json"))
+    if not truths:
+        raise UsageError(f"no ground truth found: expected {args.truth}/<category>/<n>.json")
+    report = Report()
+    reporter = _Reporter()
+    for path in progress(truths, len(truths), "eval extraction"):
+        text = Path(args.reports) / path.parent.name / f"{path.stem}.txt"
+        try:
+            truth = import_truth_file(path).scenario
+            got = extract_report(read_source(text, "crash report"), args.llm)
+        except SovarcError as exc:
+            reporter.error(exc, None, str(path))
+            continue
+        report.add(truth.name, got, truth)
+    if args.json:
+        print(json.dumps(report.to_json(), indent=2, ensure_ascii=False))
+    else:
+        print(f"extraction accuracy (%) on {len(report.cases)} reports, front end --llm {args.llm}\n")
+        print(report.table())
+        failures = report.failures()
+        if failures:
+            print(f"\n{len(failures)} failing fields:")
+            for case, attribute, why in failures:
+                print(f"  {case:<14} {attribute:<18} {why}")
+    return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
 HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
+    "extract": _cmd_extract,
+    "eval": _cmd_eval,
     "import-truth": _cmd_import_truth,
     "run": _cmd_run,
     "check": _cmd_check,
@@ -396,6 +518,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SovarcError as exc:
         print(exc.render(), file=sys.stderr)
         return EXIT_INPUT
+    except BrokenPipeError:  # `sovarc ... | head`: the reader has gone; that is fine
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - keep Python's exit flush quiet
+        return EXIT_OK
     except KeyboardInterrupt:
         print("sovarc: interrupted", file=sys.stderr)
         return 130

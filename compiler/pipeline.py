@@ -25,6 +25,7 @@ class Options:
 
     seed: int = 0
     target: str | None = None
+    llm: str = "none"  # front end for reports: see sovarc.compiler.frontend.LLM_CHOICES
 
 
 @dataclass
@@ -45,7 +46,11 @@ class Stage:
     render: Callable[[Any], str]
 
 
-def _parse(source: Source, options: Options, log: RunLog) -> Scenario:
+def _read(source: Source, options: Options, log: RunLog) -> Scenario:
+    if Path(source.name).suffix.lower() == ".txt":
+        from sovarc.compiler.frontend import extract_report
+
+        return extract_report(source, options.llm)
     return parse_source(source)
 
 
@@ -55,7 +60,7 @@ def _verify(scenario: Scenario, options: Options, log: RunLog) -> Scenario:
 
 
 PIPELINE: tuple[Stage, ...] = (
-    Stage("parse", "read .sov text into the scenario IR", Source, Scenario, _parse, to_text),
+    Stage("read", "parse a .sov scenario, or extract one from a crash report (.txt)", Source, Scenario, _read, to_text),
     Stage("verify", "check the IR's semantic rules", Scenario, Scenario, _verify, to_text),
 )
 
@@ -69,14 +74,9 @@ class PipelineError(SovarcError):
 def entry_stage(path: str) -> str:
     """The stage a file enters the pipeline at, by its kind."""
     suffix = Path(path).suffix.lower()
-    if suffix in (".sov", ""):
-        return "parse"
-    if suffix == ".txt":
-        raise PipelineError(
-            f"{path}: reading crash reports needs the front end (`sovarc extract`), "
-            "which is not built yet; give a .sov scenario instead"
-        )
-    raise PipelineError(f"{path}: unknown input kind '{suffix}'; expected a .sov scenario")
+    if suffix in (".sov", ".txt", ""):
+        return "read"
+    raise PipelineError(f"{path}: unknown input kind '{suffix}'; expected a crash report (.txt) or a scenario (.sov)")
 
 
 def run_pipeline(

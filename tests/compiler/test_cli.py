@@ -147,7 +147,7 @@ def test_convert_to_json_and_back_and_schema(tmp_path: Path) -> None:
 def test_main_job_runs_the_pipeline_and_dumps_ir(tmp_path: Path) -> None:
     result = sovarc(str(LEFT_TURN))
     assert result.returncode == 0 and result.stdout == LEFT_TURN.read_text()
-    dumped = sovarc(str(LEFT_TURN), "--dump-ir-after=parse", "--dump-ir-after=verify")
+    dumped = sovarc(str(LEFT_TURN), "--dump-ir-after=read", "--dump-ir-after=verify")
     assert dumped.stdout.count("// ----- IR after") == 2
     out = tmp_path / "out" / "x.sov"
     assert sovarc(str(LEFT_TURN), "-o", str(out)).returncode == 0
@@ -158,10 +158,11 @@ def test_main_job_runs_the_pipeline_and_dumps_ir(tmp_path: Path) -> None:
 def test_main_job_says_what_is_not_built(tmp_path: Path) -> None:
     target = sovarc(str(LEFT_TURN), "-t", "sumo")
     assert target.returncode == 2 and "unknown target 'sumo'" in target.stderr
-    report = tmp_path / "r.txt"
-    report.write_text("V1 struck V2.")
-    text = sovarc(str(report))
-    assert text.returncode == 1 and "front end" in text.stderr
+    pdf = tmp_path / "r.pdf"
+    pdf.write_text("V1 struck V2.")
+    kind = sovarc(str(pdf))
+    assert kind.returncode == 1 and "unknown input kind '.pdf'" in kind.stderr
+    assert sovarc(str(LEFT_TURN), "--llm", "gpt-9").returncode == 2
 
 
 def test_main_job_errors_leave_no_output(tmp_path: Path) -> None:

@@ -40,7 +40,7 @@ def test_write_atomic_leaves_nothing_behind_on_failure(tmp_path: Path, monkeypat
 
 
 def test_stages_are_an_ordered_tuple_with_typed_ends() -> None:
-    assert [s.name for s in PIPELINE] == ["parse", "verify"]
+    assert [s.name for s in PIPELINE] == ["read", "verify"]
     for before, after in itertools.pairwise(PIPELINE):
         assert before.produces is after.consumes
 
@@ -48,24 +48,24 @@ def test_stages_are_an_ordered_tuple_with_typed_ends() -> None:
 def test_run_pipeline_reports_each_stage() -> None:
     seen: list[str] = []
     source = Source(str(LEFT_TURN), LEFT_TURN.read_text())
-    result, log = run_pipeline(source, start="parse", after_stage=lambda stage, value: seen.append(stage.name))
-    assert isinstance(result, Scenario) and seen == ["parse", "verify"]
-    assert set(log.outputs) == {"parse", "verify"} and log.warnings == []
+    result, log = run_pipeline(source, start="read", after_stage=lambda stage, value: seen.append(stage.name))
+    assert isinstance(result, Scenario) and seen == ["read", "verify"]
+    assert set(log.outputs) == {"read", "verify"} and log.warnings == []
 
 
 def test_stop_after_and_verification() -> None:
     source = Source("bad.sov", LEFT_TURN.read_text().replace("lane 2", "lane 7", 1))
-    parsed, _ = run_pipeline(source, start="parse", stop="parse")
+    parsed, _ = run_pipeline(source, start="read", stop="read")
     assert parsed.participants[0].lane == 7
     with pytest.raises(VerifyError, match="V1 starts in lane 7"):
-        run_pipeline(source, start="parse")
+        run_pipeline(source, start="read")
 
 
 def test_bad_stage_names_and_inputs() -> None:
     with pytest.raises(PipelineError, match="no stage named 'lower'"):
         run_pipeline(None, start="lower")
     with pytest.raises(PipelineError, match="comes before"):
-        run_pipeline(None, start="verify", stop="parse")
+        run_pipeline(None, start="verify", stop="read")
     with pytest.raises(PipelineError, match=r"unknown input kind '\.pdf'"):
         entry_stage("report.pdf")
-    assert entry_stage("a.sov") == "parse"
+    assert entry_stage("a.sov") == "read"

@@ -1,0 +1,1 @@
+"""Evaluations of the compiler against ground truth (`sovarc eval ...`)."""
