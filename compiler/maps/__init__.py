@@ -1,0 +1,31 @@
+"""The map layer: load a road network, find its candidate sites, and match a scenario onto them.
+
+road_map = load_map("town.net.xml")              # or an OpenDRIVE .xodr, through netconvert
+sites = find_sites(road_map, RoadKind.T_JUNCTION)
+matches = match_sites(scenario, road_map, n=3, seed=0)
+"""
+
+from sovarc.compiler.maps.load import RoadMap, load_map
+from sovarc.compiler.maps.needs import Need, scenario_needs
+from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive
+from sovarc.compiler.maps.search import Placement, SiteMatch, match_site, match_sites, pick_diverse
+from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites
+
+__all__ = [
+    "Arm",
+    "Connection",
+    "LaneInfo",
+    "Need",
+    "Placement",
+    "RoadMap",
+    "Site",
+    "SiteMatch",
+    "ToolError",
+    "convert_opendrive",
+    "find_sites",
+    "load_map",
+    "match_site",
+    "match_sites",
+    "pick_diverse",
+    "scenario_needs",
+]

@@ -1,0 +1,228 @@
+"""The paper's Algorithm 1 site search: the sites of a map where a scenario can be staged.
+
+A site fits when it has the scenario's road kind and, under one rotation of the compass,
+every participant finds its arm, enough lanes, and the connection its manoeuvre needs.
+
+The rotation: report heading H is staged in the site direction H + rotation + the site's
+orientation, with rotation a multiple of 90 degrees, so opposite headings stay opposite,
+crossing ones stay crossing, and left stays left. Report 'north' is the arm whose entering
+traffic travels (roughly, after rotation) north. Of the rotations that fit, the one that
+turns the compass least is kept.
+
+Lanes are asked per participant (its start lane, lane changes, the lane a turn enters); the
+report's `road.lanes` (both directions together) is not a filter of its own.
+
+Clamping (only with `clamp=True`): a site that has every arm and connection but too few
+lanes also fits; the lane numbers are clamped to the site's lanes and each clamp is written
+as a note in `SiteMatch.clamped`. Exact fits are always chosen before clamped ones.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections import Counter
+from dataclasses import dataclass
+
+from sovarc.compiler.maps.geometry import angle_diff
+from sovarc.compiler.maps.load import RoadMap
+from sovarc.compiler.maps.needs import HEADING_DEGREES, JUNCTION_MOVES, Need, scenario_needs
+from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
+from sovarc.dsl.errors import Diagnostic, LoweringError
+from sovarc.dsl.ir import ActionKind, Heading, RoadKind, Scenario
+
+ROTATIONS = (0, 90, 180, 270)
+
+
+@dataclass(frozen=True)
+class Placement:
+    """Where one participant starts on the site."""
+
+    participant: str
+    heading: Heading | None  # the report's heading
+    site_heading: float | None  # compass degrees it is staged in; None when its heading is unknown
+    arm: str | None  # id of the arm it starts on; None when it is not tied to an arm
+    lane: int | None  # start lane on that arm (after clamping), from the right-most as 1
+
+
+@dataclass(frozen=True)
+class SiteMatch:
+    """A site a scenario fits on, and how the report's compass was laid onto it."""
+
+    site: Site
+    rotation: int  # 0, 90, 180 or 270: added to a report heading, before the site's orientation
+    arms: tuple[tuple[Heading, str | None], ...]  # report heading -> id of the arm entered that way, or None
+    placements: tuple[Placement, ...]  # in the scenario's participant order
+    clamped: tuple[str, ...] = ()  # one note per lane number clamped to the site's lanes; empty when exact
+
+    @property
+    def exact(self) -> bool:
+        return not self.clamped
+
+    def site_heading(self, heading: Heading) -> float:
+        return (HEADING_DEGREES[heading] + self.rotation + self.site.orientation) % 360.0
+
+    def arm_for(self, heading: Heading) -> Arm | None:
+        arm_id = dict(self.arms)[heading]
+        return next((a for a in self.site.arms if a.id == arm_id), None)
+
+    def placement(self, participant: str) -> Placement | None:
+        return next((p for p in self.placements if p.participant == participant), None)
+
+
+def match_sites(
+    scenario: Scenario,
+    road_map: RoadMap,
+    n: int = 1,
+    seed: int = 0,
+    *,
+    clamp: bool = False,
+    min_length: float = DEFAULT_MIN_LENGTH,
+) -> list[SiteMatch]:
+    """Up to `n` distinct fitting sites, chosen to differ in lane width, length and lane count.
+
+    The same scenario, map and seed give the same sites in the same order. Fewer than `n`
+    come back when fewer fit; none fitting is a LoweringError saying what was needed.
+    """
+    if n < 1:
+        raise ValueError(f"n must be at least 1, not {n}")
+    kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
+    needs = scenario_needs(scenario)
+    sites = find_sites(road_map, kind, min_length=min_length)
+    matches = [m for site in sites if (m := match_site(site, needs, clamp=clamp)) is not None]
+    if not matches:
+        could_clamp = not clamp and any(match_site(site, needs, clamp=True) for site in sites)
+        every_site = find_sites(road_map, min_length=min_length)
+        raise LoweringError(_no_fit(scenario, needs, road_map, every_site, could_clamp))
+    return pick_diverse(matches, n, seed)
+
+
+def match_site(site: Site, needs: tuple[Need, ...], *, clamp: bool = False) -> SiteMatch | None:
+    """The best way to stage `needs` on `site`: an exact fit under the least rotation, else the
+    rotation with the fewest clamps (when allowed); None when no rotation fits."""
+    best: SiteMatch | None = None
+    order = sorted(ROTATIONS, key=lambda r: (abs(angle_diff(r + site.orientation, 0.0)), r))
+    for rotation in order:
+        found = _fit(site, needs, rotation, clamp)
+        if found is not None and (best is None or len(found.clamped) < len(best.clamped)):
+            best = found
+            if best.exact:
+                break
+    return best
+
+
+def _fit(site: Site, needs: tuple[Need, ...], rotation: int, clamp: bool) -> SiteMatch | None:
+    slots = {h: (HEADING_DEGREES[h] + rotation) // 90 for h in Heading}
+    notes: list[str] = []
+    placements = []
+    for need in needs:
+        site_heading = None
+        if need.heading is not None:
+            site_heading = round((HEADING_DEGREES[need.heading] + rotation + site.orientation) % 360.0, 6)
+        if not need.placed:
+            widest = max(len(a.incoming) for a in site.arms)
+            if not _lanes_ok(need.lanes, widest, f"{need.participant}: the widest arm", clamp, notes):
+                return None
+            lane = min(need.lane, widest) if need.lane else None
+            placements.append(Placement(need.participant, need.heading, site_heading, None, lane))
+            continue
+        assert need.heading is not None
+        arm = site.arm_in_slot(slots[need.heading])
+        if arm is None or not arm.incoming or not _move_ok(site, arm, need, clamp, notes):
+            return None
+        have = len(arm.incoming)
+        if not _lanes_ok(need.lanes, have, f"{need.participant}: arm {arm.id}", clamp, notes):
+            return None
+        lane = min(need.lane, have) if need.lane else None
+        placements.append(Placement(need.participant, need.heading, site_heading, arm.id, lane))
+    arms = tuple((h, arm.id if (arm := site.arm_in_slot(slots[h])) else None) for h in Heading)
+    return SiteMatch(site, rotation, arms, tuple(placements), tuple(notes))
+
+
+def _lanes_ok(needed: int, have: int, what: str, clamp: bool, notes: list[str]) -> bool:
+    if needed <= have:
+        return True
+    if clamp:
+        notes.append(f"{what} has {have} of the {needed} lanes needed; lane numbers above {have} clamped to {have}")
+    return clamp
+
+
+def _move_ok(site: Site, arm: Arm, need: Need, clamp: bool, notes: list[str]) -> bool:
+    """Whether the arm has what the participant's manoeuvre and wrong-way driving need."""
+    if need.against_start and not arm.outgoing:
+        return False
+    if need.move is None:
+        return True
+    if need.move is ActionKind.U_TURN:
+        targets: list[Arm] = [arm] if arm.outgoing else []
+    elif site.kind is RoadKind.STRAIGHT:
+        return True  # a turn off a straight road goes into a driveway or a side road off the map
+    else:
+        directions = JUNCTION_MOVES[need.move]
+        ids = {c.to_lane for c in site.connections_from(arm) if c.direction in directions}
+        targets = [a for a in site.arms if any(lane.id in ids for lane in a.outgoing)]
+    if need.against_after:
+        targets = [a for a in targets if a.incoming]
+    if not targets:
+        return False
+    widest = max(len(a.outgoing) for a in targets)
+    what = f"{need.participant}: the road its {need.move.value} enters"
+    return _lanes_ok(need.to_lanes, widest, what, clamp, notes)
+
+
+def features(match: SiteMatch) -> tuple[float, float, float]:
+    """What makes sites differ for a test: mean lane width, shortest arm, most lanes."""
+    return (match.site.mean_width, match.site.min_length, float(match.site.lanes))
+
+
+def pick_diverse(matches: list[SiteMatch], n: int, seed: int) -> list[SiteMatch]:
+    """Greedy farthest-point choice on normalized features; exact fits before clamped ones.
+
+    The pool is shuffled by `random.Random(seed)` after sorting by site id, so the first pick
+    and every tie depend on the seed alone.
+    """
+    pool = sorted(matches, key=lambda m: m.site.id)
+    random.Random(seed).shuffle(pool)
+    raw = [features(m) for m in pool]
+    lows = [min(column) for column in zip(*raw, strict=True)]
+    spans = [max(column) - low or 1.0 for column, low in zip(zip(*raw, strict=True), lows, strict=True)]
+    vectors = {
+        id(m): tuple((v - lo) / s for v, lo, s in zip(f, lows, spans, strict=True))
+        for m, f in zip(pool, raw, strict=True)
+    }
+    chosen: list[SiteMatch] = []
+    for group in ([m for m in pool if m.exact], [m for m in pool if not m.exact]):
+        while group and len(chosen) < n:
+            pick = group[0] if not chosen else max(group, key=lambda m: _gap(vectors, m, chosen))
+            chosen.append(pick)
+            group.remove(pick)
+    return chosen
+
+
+def _gap(vectors: dict[int, tuple[float, ...]], match: SiteMatch, chosen: list[SiteMatch]) -> float:
+    return min(math.dist(vectors[id(match)], vectors[id(c)]) for c in chosen)
+
+
+KIND_NAMES: dict[RoadKind, tuple[str, str]] = {
+    RoadKind.INTERSECTION: ("an intersection", "intersections"),
+    RoadKind.T_JUNCTION: ("a T-junction", "T-junctions"),
+    RoadKind.STRAIGHT: ("a straight road", "straight roads"),
+}
+
+
+def _no_fit(
+    scenario: Scenario, needs: tuple[Need, ...], road_map: RoadMap, sites: list[Site], could_clamp: bool
+) -> Diagnostic:
+    kind = KIND_NAMES[scenario.road.kind][0] if isinstance(scenario.road.kind, RoadKind) else "a site of any kind"
+    asked = "; ".join(n.describe() for n in needs) or "no participants"
+    counts = Counter(s.kind for s in sites)
+    have = ", ".join(f"{counts[k]} {KIND_NAMES[k][1]}" + _most_lanes(sites, k) for k in RoadKind)
+    message = f"no site of {road_map.name} fits scenario '{scenario.name}': it needs {kind} with {asked}"
+    message += f"; the map has {have}"
+    hint = "some sites fit with fewer lanes; match with clamp=True to use them" if could_clamp else None
+    return Diagnostic(message, scenario.road.meta.where("kind") or scenario.meta.span, hint=hint)
+
+
+def _most_lanes(sites: list[Site], kind: RoadKind) -> str:
+    most = max((s.lanes for s in sites if s.kind is kind), default=0)
+    return f" (at most {most} lane{'s' if most > 1 else ''} per direction)" if most else ""

@@ -1,0 +1,40 @@
+"""Maps shared by the map-layer tests, each loaded once per session (loading needs SUMO)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from sovarc.compiler.maps import RoadMap, load_map
+from sovarc.dsl import Scenario, parse
+
+from tests.conftest import EXAMPLES, SHARED
+
+TOWN = EXAMPLES / "maps" / "town.net.xml"
+OPENDRIVE = SHARED / "data" / "opendrive"
+SCENARIOS = sorted((EXAMPLES / "scenarios").glob("*.sov"))
+
+
+def osm_path() -> Path:
+    import sumo
+
+    return Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
+
+
+def scenario(name: str) -> Scenario:
+    return parse((EXAMPLES / "scenarios" / f"{name}.sov").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="session")
+def town() -> RoadMap:
+    return load_map(TOWN)
+
+
+@pytest.fixture(scope="session")
+def osm() -> RoadMap:
+    return load_map(osm_path())
+
+
+@pytest.fixture(scope="session")
+def opendrive() -> dict[str, RoadMap]:
+    return {path.stem: load_map(path) for path in sorted(OPENDRIVE.glob("*.xodr"))}

@@ -1,0 +1,76 @@
+"""Sites on networks we did not draw: esmini's OpenDRIVE files and SUMO's DRT demo city (OpenStreetMap)."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import pytest
+from sovarc.compiler.maps import RoadMap, find_sites, match_sites
+from sovarc.dsl.ir import RoadKind
+
+from tests.compiler.maps.conftest import scenario
+
+pytestmark = pytest.mark.slow  # needs SUMO
+
+X, T, S = RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT
+
+# What each OpenDRIVE file holds, as converted by netconvert.
+OPENDRIVE_SITES = {
+    "e6mini": {S: 1},  # a 1.4 km gently curved four-lane motorway
+    "fabriksgatan": {X: 1, S: 3},  # one crossing; one of its arms is 17 m long, too short for a straight site
+    "jolengatan": {S: 1},  # an 800 m curving street, single lanes
+    "multi_intersections": {X: 2, T: 3, S: 15},
+    "straight_500m": {S: 1},
+    "two_plus_one": {S: 3},  # a 2+1 road: short lane-change sections between three long ones
+}
+
+
+def test_opendrive_sites(opendrive: dict[str, RoadMap]) -> None:
+    found = {name: dict(Counter(s.kind for s in find_sites(m))) for name, m in opendrive.items()}
+    assert found == OPENDRIVE_SITES
+
+
+def test_opendrive_lane_widths_survive_conversion(opendrive: dict[str, RoadMap]) -> None:
+    (motorway,) = find_sites(opendrive["e6mini"])
+    assert motorway.lanes == 4
+    widths = [lane.width for lane in motorway.arms[0].incoming]
+    assert widths == pytest.approx([2.85, 3.9, 3.5, 3.65])  # right-most first, as the file gives them
+    (straight,) = find_sites(opendrive["straight_500m"])
+    assert straight.min_length == pytest.approx(500.0, abs=1.0)
+    assert {round(a.heading) for a in straight.arms} == {90, 270}
+
+
+def test_opendrive_junction_arms_form_a_cross(opendrive: dict[str, RoadMap]) -> None:
+    for site in find_sites(opendrive["multi_intersections"], X):
+        assert [a.slot for a in site.arms] == [0, 1, 2, 3]
+        assert site.control == "traffic_light" and site.connections  # the file's signals
+    for site in find_sites(opendrive["multi_intersections"], T):
+        assert len(site.arms) == 3 and len({a.slot for a in site.arms}) == 3
+
+
+def test_osm_city_site_counts(osm: RoadMap) -> None:
+    # regression figures for the DRT network shipped with eclipse-sumo 1.x
+    counts = Counter(s.kind for s in find_sites(osm))
+    assert counts == {X: 21, T: 63, S: 64}
+
+
+def test_osm_sites_use_car_lanes_only(osm: RoadMap) -> None:
+    sites = find_sites(osm)
+    edges = {e.getID(): e for e in osm.net.getEdges()}
+    for site in sites:
+        for arm in site.arms:
+            for lane in arm.incoming + arm.outgoing:
+                assert edges[lane.edge].getLane(lane.index).allows("passenger")
+                assert not lane.edge.startswith(":")
+    # OSM roads with sidewalks: car lane 1 is not SUMO lane 0
+    assert any(lane.index != lane.number - 1 for s in sites for a in s.arms for lane in a.incoming)
+    for site in find_sites(osm, X):
+        assert max(abs(((a.heading - site.orientation - 90 * a.slot + 180) % 360) - 180) for a in site.arms) <= 35
+
+
+def test_search_works_on_the_osm_city(osm: RoadMap) -> None:
+    matches = match_sites(scenario("intersection_left_turn_across_path_side"), osm, n=5, seed=1)
+    assert len({m.site.id for m in matches}) == 5
+    assert all(m.site.kind is X and m.exact for m in matches)
+    u_turn = match_sites(scenario("t_junction_u_turn_side"), osm, n=3)
+    assert all(m.site.kind is T for m in u_turn)
