@@ -1,0 +1,76 @@
+"""The child process that hosts llama.cpp for `EmbeddedProvider`: `python -m` this module.
+
+llama.cpp logs from its own threads straight to file descriptors 1 and 2, and
+a stuck generation cannot be interrupted from Python. Running it in a child
+whose fds 1 and 2 point at a log file keeps the terminal clean, and lets the
+parent enforce a real timeout by killing the child.
+
+Protocol, one JSON object per line: the config arrives on stdin; the child
+answers {"ready": load_seconds} or {"error": message} on the protocol pipe
+(the original stdout), then one {"ok": response} or {"error": message} per
+request line. EOF on stdin ends it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import sys
+import time
+from typing import IO, Any
+
+
+def _private_channel(log_file: str) -> IO[str]:
+    """Move the protocol off fd 1, then point fds 1 and 2 at the log file for llama.cpp."""
+    channel = os.fdopen(os.dup(1), "w", encoding="utf-8")
+    fd = os.open(log_file, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
+    os.dup2(fd, 1)
+    os.dup2(fd, 2)
+    os.close(fd)
+    return channel
+
+
+def _load(config: dict[str, Any]) -> Any:
+    import xllamacpp  # only the child loads the native library
+
+    params = xllamacpp.CommonParams()
+    params.model.path = config["model_path"]
+    params.n_ctx = config["ctx"]
+    params.n_parallel = 1  # one slot: requests are serial, and the whole context goes to it
+    params.cpuparams.n_threads = config["threads"]
+    params.cpuparams_batch.n_threads = config["threads"]
+    params.sampling.temp = 0.0
+    params.sampling.seed = config["seed"]
+    # The server also listens on a loopback port; a random key keeps other local processes out.
+    params.api_keys = [secrets.token_hex(16)]
+    return xllamacpp.Server(params)
+
+
+def _send(channel: IO[str], message: dict[str, Any]) -> None:
+    channel.write(json.dumps(message) + "\n")
+    channel.flush()
+
+
+def main() -> None:
+    config = json.loads(sys.stdin.readline())
+    channel = _private_channel(config["log_file"])
+    started = time.perf_counter()
+    try:
+        server = _load(config)
+    except ImportError:
+        _send(channel, {"error": "the xllamacpp package is not installed; run: pip install xllamacpp"})
+        return
+    except Exception as exc:  # anything here means no model: report it, never a traceback
+        _send(channel, {"error": f"{type(exc).__name__}: {exc}"})
+        return
+    _send(channel, {"ready": time.perf_counter() - started})
+    for line in sys.stdin:
+        try:
+            _send(channel, {"ok": server.handle_chat_completions(json.loads(line))})
+        except Exception as exc:
+            _send(channel, {"error": f"{type(exc).__name__}: {exc}"})
+
+
+if __name__ == "__main__":
+    main()
