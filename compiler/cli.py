@@ -81,8 +81,9 @@ def _build_parser() -> argparse.ArgumentParser:
             "Compile one input through the pipeline.\n\n"
             f"Stages, in order: {', '.join(STAGE_NAMES)}.\n\n"
             "examples:\n"
-            "  sovarc examples/scenarios/straight_rear_end.sov\n"
-            "  sovarc scenario.sov --dump-ir-after=parse\n"
+            "  sovarc examples/scenarios/straight_rear_end_stopped_traffic.sov\n"
+            "  sovarc examples/reports/left_turn_oncoming_pickup.txt\n"
+            "  sovarc scenario.sov --dump-ir-after=read\n"
             "  sovarc scenario.sov -o checked.sov"
         ),
     )
@@ -299,7 +300,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
         try:
             scenario, source = load_scenario(name)
         except SovarcError as exc:
-            reporter.error(exc, _source_of(exc, name))
+            reporter.error(exc, _source_of(name))
             continue
         found = verify(scenario)
         reporter.diagnostics(found, source, args.strict)
@@ -309,7 +310,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
-def _source_of(exc: SovarcError, name: str) -> Source | None:
+def _source_of(name: str) -> Source | None:
     """The file's text, for quoting it under a diagnostic, when it can be read at all."""
     try:
         from sovarc.dsl import read_source
@@ -326,7 +327,7 @@ def _cmd_fmt(args: argparse.Namespace) -> int:
         try:
             scenario, source = load_scenario(name)
         except SovarcError as exc:
-            reporter.error(exc, _source_of(exc, name))
+            reporter.error(exc, _source_of(name))
             continue
         if Path(name).suffix.lower() == ".json":
             reporter.failed = True
@@ -355,7 +356,7 @@ def _cmd_diff(args: argparse.Namespace) -> int:
         try:
             loaded.append(load_scenario(name)[0])
         except SovarcError as exc:
-            reporter.error(exc, _source_of(exc, name))
+            reporter.error(exc, _source_of(name))
     if reporter.failed:
         return EXIT_INPUT
     changes = diff(loaded[0], loaded[1])
@@ -375,7 +376,7 @@ def _cmd_convert(args: argparse.Namespace) -> int:
     try:
         scenario, _ = load_scenario(args.file)
     except SovarcError as exc:
-        _Reporter().error(exc, _source_of(exc, args.file))
+        _Reporter().error(exc, _source_of(args.file))
         return EXIT_INPUT
     text = dump_scenario(scenario, as_json=form == "json")
     if args.output:
@@ -411,7 +412,7 @@ def _cmd_import_truth(args: argparse.Namespace) -> int:
             imported = import_truth_file(path, reports if reports.is_dir() else None)
             verify_or_raise(imported.scenario)
         except SovarcError as exc:
-            reporter.error(exc, _source_of(exc, str(path)), str(path))
+            reporter.error(exc, _source_of(str(path)), str(path))
             continue
         for note in imported.notes:
             print(f"{path}: note: {note}", file=sys.stderr)

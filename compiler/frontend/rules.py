@@ -108,18 +108,22 @@ def extract_environment(text: str) -> Environment:
     return Environment(weather or UNKNOWN, tuple(lighting) or UNKNOWN)
 
 
+def first_speed(text: str) -> Speed | Unknown:
+    """The first speed stated; in km/h when both units are given (the ground truth's convention)."""
+    found = [(int(v), u.lower()) for v, u in _SPEED.findall(text)]
+    metric = [v for v, u in found if u != "mph"]
+    if metric:
+        return Speed(metric[0], SpeedUnit.KMH)
+    return Speed(found[0][0], SpeedUnit.MPH) if found else UNKNOWN
+
+
 def extract_speed_limit(text: str) -> Speed | Unknown:
-    """The posted limit; km/h when the report gives both units (the ground truth's convention)."""
+    """The posted limit: the first speed in the first sentence about a limit."""
     for sentence in sentences(text):
-        if not re.search(r"speed limits?|posted|limit", sentence, re.IGNORECASE):
-            continue
-        found = [(int(v), u.lower()) for v, u in _SPEED.findall(sentence)]
-        if not found:
-            continue
-        metric = [v for v, u in found if u != "mph"]
-        if metric:
-            return Speed(metric[0], SpeedUnit.KMH)
-        return Speed(found[0][0], SpeedUnit.MPH)
+        if re.search(r"speed limits?|posted|limit", sentence, re.IGNORECASE):
+            limit = first_speed(sentence)
+            if not isinstance(limit, Unknown):
+                return limit
     return UNKNOWN
 
 
@@ -180,7 +184,7 @@ def _read_participant(chunks: list[str], lanes: int | Unknown) -> _Reading:
         if isinstance(reading.lane, Unknown):
             reading.lane = _lane(done, lanes)
         if isinstance(reading.speed, Unknown) and not re.search(r"\blimit|\bposted", done, re.IGNORECASE):
-            reading.speed = _speed(done)
+            reading.speed = first_speed(done)
         for kind, pattern in _ACTION_PATTERNS:
             for m in re.finditer(pattern, done, re.IGNORECASE):
                 to: int | Side | None = None
@@ -192,15 +196,6 @@ def _read_participant(chunks: list[str], lanes: int | Unknown) -> _Reading:
                 reading.actions.append((offset + m.start(), Action(kind, to)))
         offset += len(chunk) + 1
     return reading
-
-
-def _speed(text: str) -> Speed | Unknown:
-    """Its own travel speed; km/h first when both units are given, as for the limit."""
-    found = [(int(v), u.lower()) for v, u in _SPEED.findall(text)]
-    metric = [v for v, u in found if u != "mph"]
-    if metric:
-        return Speed(metric[0], SpeedUnit.KMH)
-    return Speed(found[0][0], SpeedUnit.MPH) if found else UNKNOWN
 
 
 def _lane(text: str, lanes: int | Unknown) -> int | Unknown:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -30,6 +31,17 @@ def test_version_and_help() -> None:
     for command in ("check", "fmt", "diff", "convert", "schema", "run"):
         result = sovarc(command, "--help")
         assert result.returncode == 0 and "example" in result.stdout, command
+
+
+def test_help_examples_name_real_files_and_stages() -> None:
+    from sovarc.compiler.pipeline import STAGE_NAMES
+
+    texts = [sovarc("--help").stdout] + [sovarc(c, "--help").stdout for c in ("run", "check", "fmt", "extract")]
+    for text in texts:
+        for path in re.findall(r"(examples/[\w/.-]+\.(?:sov|txt))", text):
+            assert (EXAMPLES.parent / path).exists(), path
+        for stage in re.findall(r"--dump-ir-after=(\w+)", text):
+            assert stage in STAGE_NAMES, stage
 
 
 def test_no_command_is_a_usage_error() -> None:
