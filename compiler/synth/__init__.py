@@ -1,0 +1,1 @@
+"""Trajectory synthesis: OMPL paths, TOPP-RA speed limits and Ruckig timing."""
