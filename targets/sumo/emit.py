@@ -1,0 +1,98 @@
+"""Write a plan as a self-contained SUMO scenario folder that plain `sumo -c` replays.
+
+    out_dir/
+      <map>.net.xml      the road network (an OpenDRIVE map is converted by netconvert)
+      scenario.add.xml   a vType per participant, of its real size; each vehicle's route;
+                         a POI on the collision area with weather, lighting and crash facts
+      scenario.fcd.xml   the trajectories, one <timestep> per plan step
+      scenario.sumocfg   step length = plan.step, collision detection on (junctions too)
+
+The trajectories are replayed by SUMO's own `fcd-replay` device (SUMO >= 1.20): the
+configuration names the FCD file, SUMO builds each participant from it and moves it onto
+its recorded position every step (moveToXY). So `sumo -c scenario.sumocfg` (or
+`sumo-gui -c ...`) shows the crash and writes it to `collisions.xml` with no driver or
+TraCI script at all. The oracle (`check`) runs exactly this configuration through libsumo
+and only observes. The same bytes come out for the same plan and map.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+import shutil
+from pathlib import Path
+
+from sovarc.compiler.plan import Plan
+from sovarc.dsl.errors import Diagnostic, InputError, UnsupportedError
+from sovarc.dsl.span import Span
+from sovarc.targets.sumo import documents
+from sovarc.targets.sumo.network import Network, Spot, read_network
+
+_NETCONVERT_HEADER = re.compile(rb"<!--\s*generated on.*?-->\s*", re.DOTALL)
+
+
+def emit(plan: Plan, out_dir: str | os.PathLike[str]) -> Path:
+    """Write the scenario folder for `plan` into `out_dir` (created if needed); returns the .sumocfg."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    net_file = copy_network(plan, out)
+    network = read_network(net_file)
+    spots = {t.participant: track(plan, t.participant, network) for t in plan.trajectories}
+    files = {
+        documents.ADDITIONAL: documents.additional(plan, net_file.name),
+        documents.FCD: documents.fcd(plan, spots, network),
+        documents.CONFIG: documents.config(plan, net_file.name),
+    }
+    for name, text in files.items():
+        (out / name).write_text(text, encoding="utf-8", newline="\n")
+    return out / documents.CONFIG
+
+
+def copy_network(plan: Plan, out: Path) -> Path:
+    """The plan's map as a SUMO network in `out`; the map must be the one the plan was made on."""
+    source = Path(plan.map)
+    if not source.is_file():
+        raise InputError(Diagnostic("map file not found", Span.whole_file(plan.map)))
+    data = source.read_bytes()
+    if hashlib.sha256(data).hexdigest() != plan.map_sha256:
+        message = "map file changed since the plan was made (its sha256 differs); plan again on this map"
+        raise InputError(Diagnostic(message, Span.whole_file(plan.map)))
+    name = source.name
+    if name.lower().endswith(".net.xml"):
+        target = out / name
+        if not target.exists() or target.read_bytes() != data:
+            shutil.copyfile(source, target)
+        return target
+    if name.lower().endswith(".xodr"):
+        from sovarc.compiler.maps.netconvert import convert_opendrive
+
+        target = out / (name[: -len(".xodr")] + ".net.xml")
+        convert_opendrive(source, target)
+        # netconvert's header names the date and the temp paths: drop it for byte-stable output
+        target.write_bytes(_NETCONVERT_HEADER.sub(b"", target.read_bytes(), count=1))
+        return target
+    raise InputError(Diagnostic("the SUMO target needs a .net.xml or .xodr map", Span.whole_file(plan.map)))
+
+
+def track(plan: Plan, participant: str, network: Network) -> list[Spot]:
+    """The lane (and place on it) of each of a participant's samples, for SUMO's replay.
+
+    A vehicle never starts on a junction lane (SUMO cannot route from one): it starts at the
+    end of the lane leading into it, and is moved onto its recorded position at the next step.
+    """
+    t = plan.trajectory(participant)
+    prefer = frozenset(t.lanes)
+    pedestrian = documents.is_person(t)
+    spots: list[Spot] = []
+    for s in t.samples:
+        try:
+            spots.append(network.locate(s.x, s.y, s.heading, prefer, pedestrian))
+        except ValueError as exc:
+            raise UnsupportedError(f"{participant} at t={s.t:.2f} s is off the road network: {exc}") from None
+    first = spots[0]
+    if first.lane.internal and not pedestrian:
+        before = network.previous_normal_lane(first.lane)
+        if before is not None:
+            spots[0] = Spot(before, before.length, 0.0, first.heading)
+    return spots
