@@ -1,0 +1,151 @@
+"""Plane geometry for the oracle: poses over time, body footprints, gaps, contact faces."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from sovarc.targets.openscenario.readback import Entity, Pose
+
+Point = tuple[float, float]
+Polygon = tuple[Point, ...]
+TAU = 2.0 * math.pi
+
+
+def angle_diff(a: float, b: float) -> float:
+    """b - a in radians, wrapped to (-pi, pi]."""
+    d = (b - a) % TAU
+    return d - TAU if d > math.pi else d
+
+
+def pose_at(poses: Sequence[Pose], t: float) -> Pose:
+    """The pose at time t, linear between vertices (headings along the shorter arc), clamped to the ends."""
+    if t <= poses[0].t:
+        return poses[0]
+    if t >= poses[-1].t:
+        return poses[-1]
+    lo, hi = 0, len(poses) - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if poses[mid].t <= t:
+            lo = mid
+        else:
+            hi = mid
+    a, b = poses[lo], poses[hi]
+    u = (t - a.t) / (b.t - a.t) if b.t > a.t else 0.0
+    return Pose(t, a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.h + u * angle_diff(a.h, b.h)) % TAU)
+
+
+def footprint(entity: Entity, pose: Pose) -> Polygon:
+    """The bounding box's corners on the ground, counter-clockwise."""
+    c, s = math.cos(pose.h), math.sin(pose.h)
+    cx = pose.x + c * entity.center_x - s * entity.center_y
+    cy = pose.y + s * entity.center_x + c * entity.center_y
+    hl, hw = entity.length / 2, entity.width / 2
+    corners = ((hl, hw), (-hl, hw), (-hl, -hw), (hl, -hw))
+    return tuple((cx + c * u - s * v, cy + s * u + c * v) for u, v in corners)
+
+
+def _axes(poly: Polygon) -> list[Point]:
+    out = []
+    for i, (x1, y1) in enumerate(poly):
+        x2, y2 = poly[(i + 1) % len(poly)]
+        ex, ey = x2 - x1, y2 - y1
+        n = math.hypot(ex, ey) or 1.0
+        out.append((-ey / n, ex / n))
+    return out
+
+
+def overlap(a: Polygon, b: Polygon) -> bool:
+    """Whether two convex polygons share interior points (separating-axis test)."""
+    for ax, ay in _axes(a) + _axes(b):
+        pa = [x * ax + y * ay for x, y in a]
+        pb = [x * ax + y * ay for x, y in b]
+        if max(pa) <= min(pb) or max(pb) <= min(pa):
+            return False
+    return True
+
+
+def _point_segment(p: Point, a: Point, b: Point) -> tuple[float, Point]:
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    length2 = ex * ex + ey * ey
+    u = 0.0 if length2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / length2))
+    q = (a[0] + u * ex, a[1] + u * ey)
+    return math.hypot(p[0] - q[0], p[1] - q[1]), q
+
+
+def _edges(poly: Polygon) -> list[tuple[Point, Point]]:
+    return [(poly[i], poly[(i + 1) % len(poly)]) for i in range(len(poly))]
+
+
+def gap(a: Polygon, b: Polygon) -> float:
+    """The distance between two convex polygons; 0 when they overlap or touch."""
+    if overlap(a, b):
+        return 0.0
+    return min(
+        min(_point_segment(p, *e)[0] for p in a for e in _edges(b)),
+        min(_point_segment(p, *e)[0] for p in b for e in _edges(a)),
+    )
+
+
+def point_distance(p: Point, poly: Polygon) -> float:
+    """Distance from a point to a convex polygon; 0 inside it."""
+    if all((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0 for a, b in _edges(poly)):
+        return 0.0
+    return min(_point_segment(p, *e)[0] for e in _edges(poly))
+
+
+def _clip(subject: list[Point], a: Point, b: Point) -> list[Point]:
+    """Sutherland-Hodgman: the part of `subject` left of the directed line a -> b."""
+
+    def inside(p: Point) -> bool:
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0
+
+    def cross(p: Point, q: Point) -> Point:
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        ex, ey = b[0] - a[0], b[1] - a[1]
+        den = ex * dy - ey * dx
+        u = 0.0 if den == 0 else (ey * (p[0] - a[0]) - ex * (p[1] - a[1])) / den
+        return (p[0] + u * dx, p[1] + u * dy)
+
+    out: list[Point] = []
+    for i, p in enumerate(subject):
+        q = subject[(i + 1) % len(subject)]
+        if inside(q):
+            if not inside(p):
+                out.append(cross(p, q))
+            out.append(q)
+        elif inside(p):
+            out.append(cross(p, q))
+    return out
+
+
+def contact_point(a: Polygon, b: Polygon) -> Point:
+    """Where two bodies meet: the centre of their overlap, or the midpoint of their closest points."""
+    region = list(a)
+    for edge in _edges(b):
+        region = _clip(region, *edge)
+        if not region:
+            break
+    if len(region) >= 3:
+        return (sum(p[0] for p in region) / len(region), sum(p[1] for p in region) / len(region))
+    best: tuple[float, Point, Point] | None = None
+    for p, poly in [(p, b) for p in a] + [(p, a) for p in b]:
+        for e in _edges(poly):
+            d, q = _point_segment(p, *e)
+            if best is None or d < best[0]:
+                best = (d, p, q)
+    assert best is not None
+    return ((best[1][0] + best[2][0]) / 2, (best[1][1] + best[2][1]) / 2)
+
+
+def face_of(entity: Entity, pose: Pose, point: Point) -> str:
+    """Which face of the body a point is on (or nearest): front, rear, left or right."""
+    c, s = math.cos(pose.h), math.sin(pose.h)
+    dx, dy = point[0] - pose.x, point[1] - pose.y
+    u = c * dx + s * dy - entity.center_x  # along the body, from its centre
+    v = -s * dx + c * dy - entity.center_y  # to the left
+    nu, nv = u / (entity.length / 2), v / (entity.width / 2)
+    if abs(nu) >= abs(nv):
+        return "front" if nu >= 0 else "rear"
+    return "left" if nv >= 0 else "right"
