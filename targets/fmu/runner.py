@@ -1,0 +1,84 @@
+"""Test generation and running: every vehicle of a plan takes its turn as the ego.
+
+`run_tests(plan)` makes one test per vehicle participant (a pedestrian is never the ego: the ego is a
+driving system) and judges each. With `method="random"` the NPCs of each test are replaced by random
+but plausible ones on the same site (the paper's "Random" baseline; see baseline.py).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+from sovarc.compiler.plan import Plan
+from sovarc.targets.fmu.driver import Driver
+from sovarc.targets.fmu.harness import Run, run_test
+from sovarc.targets.fmu.interface import STEP, EgoFmu, validate_fmu
+from sovarc.targets.fmu.oracle import judge
+from sovarc.targets.fmu.reference import reference_fmu
+from sovarc.targets.fmu.world import World
+from sovarc.targets.verdict import Verdict
+
+Method = Literal["report", "random"]
+
+
+@dataclass(frozen=True)
+class TestResult:
+    verdict: Verdict
+    run: Run
+    plan: Plan  # the plan the test ran (for the random baseline: the one with random NPCs)
+
+    __test__ = False  # not a pytest class
+
+
+def egos(plan: Plan) -> list[str]:
+    """The participants that take a turn as the ego: the vehicles, in plan order."""
+    return [t.participant for t in plan.trajectories if t.body.vclass != "pedestrian"]
+
+
+def run_tests(
+    plan: Plan, ego_fmu: str | Path | None = None, seed: int = 0, *, method: Method = "report"
+) -> list[Verdict]:
+    """One verdict per vehicle of the plan as the ego, in plan order."""
+    return [r.verdict for r in run_test_results(plan, ego_fmu, seed, method=method)]
+
+
+def run_test_results(
+    plan: Plan, ego_fmu: str | Path | EgoFmu | None = None, seed: int = 0, *, method: Method = "report"
+) -> list[TestResult]:
+    """Like run_tests, with each test's run (for pictures and measurements)."""
+    ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
+    results = []
+    with _net_file(plan.map) as net, Driver(ego) as driver:
+        for name in egos(plan):
+            test_plan = plan if method == "report" else _random_plan(plan, name, seed)
+            with World(net, STEP, seed) as world:
+                run = run_test(test_plan, name, driver, world)
+            verdict = judge(run, test_plan, seed=seed, fmu=ego.model_name, method=method)
+            results.append(TestResult(verdict, run, test_plan))
+    return results
+
+
+def _random_plan(plan: Plan, ego: str, seed: int) -> Plan:
+    from sovarc.targets.fmu.baseline import random_npcs
+
+    return random_npcs(plan, ego, seed)
+
+
+@contextmanager
+def _net_file(map_path: str) -> Iterator[Path]:
+    """The SUMO network of the plan's map (an OpenDRIVE map is converted as the map layer does)."""
+    path = Path(map_path)
+    if not path.name.lower().endswith(".xodr"):
+        yield path
+        return
+    from sovarc.compiler.maps.netconvert import convert_opendrive
+
+    with tempfile.TemporaryDirectory(prefix="sovarc-fmu-map-") as tmp:
+        net = Path(tmp) / (path.stem + ".net.xml")
+        convert_opendrive(path, net)
+        yield net

@@ -1,0 +1,115 @@
+"""One ego task: a participant's start, its route and goal, and the speeds its route asks for.
+
+The ego starts at its trajectory's first sample, at that sample's speed. Its route is the path its
+trajectory drives, then on along the lane its last edge leads into (straight on without one). The
+goal is `GOAL_MARGIN` past the end of the planned path. The speed the route asks for at arc length s
+is the fastest the participant drove there (a participant that waited does not make the ego wait),
+and never below `MIN_CRUISE`, so that every ego has somewhere to go.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from sovarc.compiler.plan import Plan, Sample, Trajectory
+from sovarc.targets.fmu.interface import PATH_POINTS, PATH_SPACING
+from sovarc.targets.fmu.polyline import Point, Polyline
+
+GOAL_MARGIN = 10.0  # m past the planned path's end
+MIN_CRUISE = 3.0  # m/s: the slowest speed a route asks for
+BUDGET_SLACK = 8.0  # s the ego may take beyond the plan's own time to reach the goal
+MAX_BUDGET = 60.0  # s: no test runs longer
+BIN = 1.0  # m: resolution of the speed profile
+
+LaneShapes = Callable[[str], Sequence[tuple[str, Sequence[Point]]]]  # edge id -> (lane id, centre line) per lane
+
+
+@dataclass(frozen=True)
+class EgoTask:
+    participant: str
+    trajectory: Trajectory
+    start: Sample
+    route: Polyline
+    path_end: float  # m along the route where the planned path ends
+    goal: float  # m along the route
+    profile: np.ndarray  # m/s asked for in each BIN-metre bin of the planned path
+    cruise: float  # m/s asked for past the planned path
+    budget: float  # s to reach the goal
+
+    def target_speed(self, s: float) -> float:
+        if s >= self.path_end:
+            return self.cruise
+        k = min(max(int(s / BIN), 0), len(self.profile) - 1)
+        return max(MIN_CRUISE, float(self.profile[k]))
+
+    def path_points(self, s: float, x: float, y: float, heading: float) -> list[Point]:
+        """The route points k·PATH_SPACING ahead of arc length s, in the ego frame at (x, y, heading)."""
+        ahead = self.route.points_at(s + PATH_SPACING * np.arange(1, PATH_POINTS + 1))
+        return [to_ego_frame(p[0], p[1], x, y, heading) for p in ahead]
+
+
+def to_ego_frame(px: float, py: float, x: float, y: float, heading: float) -> Point:
+    """A map point in the frame of a vehicle at (x, y) with a compass heading: (forward, left)."""
+    rad = math.radians(heading)
+    fx, fy = math.sin(rad), math.cos(rad)  # forward
+    dx, dy = px - x, py - y
+    return (dx * fx + dy * fy, -dx * fy + dy * fx)
+
+
+def make_task(plan: Plan, participant: str, lane_shapes: LaneShapes | None = None) -> EgoTask:
+    trajectory = plan.trajectory(participant)
+    samples = trajectory.samples
+    planned = Polyline([(s.x, s.y) for s in samples])
+    towards = _continuation(trajectory, planned, lane_shapes) if lane_shapes else []
+    extra = GOAL_MARGIN + PATH_POINTS * PATH_SPACING + 20.0
+    route = planned.extended(extra, towards)
+    path_end = planned.length
+    profile, cruise = _speed_profile(samples, path_end)
+    budget = min(MAX_BUDGET, plan.duration + GOAL_MARGIN / cruise + BUDGET_SLACK)
+    start = samples[0]
+    if start.speed < 0.0:  # the ego does not reverse: it starts at rest
+        start = Sample(start.t, start.x, start.y, start.heading, 0.0)
+    return EgoTask(participant, trajectory, start, route, path_end, path_end + GOAL_MARGIN, profile, cruise, budget)
+
+
+def _speed_profile(samples: Sequence[Sample], path_end: float) -> tuple[np.ndarray, float]:
+    """The fastest speed driven in each BIN of the path (bins no sample fell in are interpolated)."""
+    bins = np.zeros(max(int(path_end / BIN) + 1, 1))
+    hit = np.zeros(len(bins), dtype=bool)
+    s = 0.0
+    for k, sample in enumerate(samples):
+        if k:
+            s += math.dist((samples[k - 1].x, samples[k - 1].y), (sample.x, sample.y))
+        at = min(int(s / BIN), len(bins) - 1)
+        bins[at] = max(bins[at], abs(sample.speed)) if hit[at] else abs(sample.speed)
+        hit[at] = True
+    where = np.flatnonzero(hit)
+    bins = np.interp(np.arange(len(bins)), where, bins[where])
+    cruise = max(MIN_CRUISE, float(bins.max()), abs(samples[-1].speed))
+    return bins, cruise
+
+
+def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneShapes) -> list[Point]:
+    """The centre line of the lane of the last edge the trajectory drives, from where its path ends."""
+    edges = [e for e in trajectory.edges if not e.startswith(":")]
+    if not edges:
+        return []
+    end = planned.point_at(planned.length)
+    lanes = list(lane_shapes(edges[-1]))
+    allowed = [(lane, shape) for lane, shape in lanes if lane in trajectory.lanes] or lanes
+    best: tuple[float, Polyline, float] | None = None
+    for _lane, shape in allowed:
+        if len(shape) < 2:
+            continue
+        line = Polyline(shape)
+        s, dist = line.project(end, 0.0, line.length)
+        if best is None or dist < best[0]:
+            best = (dist, line, s)
+    if best is None:
+        return []
+    _, line, s = best
+    later = [tuple(p) for p, at in zip(line.xy, line.s, strict=True) if at > s + 1.0]
+    return [line.point_at(s + 1.0), *later] if later or s + 1.0 < line.length else []
