@@ -97,7 +97,7 @@ def run_test(plan: Plan, ego: str, driver: Driver, world: World) -> Run:
     s, ended, contact = 0.0, "budget", None
     with driver.session(geometry) as session:
         for k in range(math.ceil(task.budget / STEP) + 1):
-            t = k * STEP
+            t = round(k * STEP, 6)
             poses = {name: world.read(name) for name in bodies}
             ex, ey, eh, _ = poses[ego]
             poses[ego] = (ex, ey, eh, state.speed)

@@ -41,7 +41,7 @@ def egos(plan: Plan) -> list[str]:
 
 
 def run_tests(
-    plan: Plan, ego_fmu: str | Path | None = None, seed: int = 0, *, method: Method = "report"
+    plan: Plan, ego_fmu: str | Path | EgoFmu | None = None, seed: int = 0, *, method: Method = "report"
 ) -> list[Verdict]:
     """One verdict per vehicle of the plan as the ego, in plan order."""
     return [r.verdict for r in run_test_results(plan, ego_fmu, seed, method=method)]
