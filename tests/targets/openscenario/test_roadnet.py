@@ -1,0 +1,86 @@
+"""The road network written beside the scenario, and the bundled schemas."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from lxml import etree
+from sovarc.dsl.errors import InputError
+from sovarc.targets.openscenario.readback import read_scenario
+from sovarc.targets.openscenario.roadnet import write_road_network
+from sovarc.targets.openscenario.schema import (
+    OPENDRIVE_SCHEMAS,
+    SCHEMAS,
+    opendrive_schema,
+    openscenario_schema,
+    schema_errors,
+)
+from sovarc.targets.openscenario.validation import xodr_finding
+from sovarc.targets.openscenario.versions import VERSIONS, dialect
+
+from tests.conftest import SHARED
+from tests.targets.openscenario.conftest import Emitter
+from tests.targets.openscenario.plans import TOWN
+
+ESMINI_MAP = SHARED / "data" / "opendrive" / "straight_500m.xodr"
+
+
+def test_every_bundled_schema_loads_and_has_its_notice() -> None:
+    for version in VERSIONS:
+        assert openscenario_schema(dialect(version)) is not None
+    for rev_minor in OPENDRIVE_SCHEMAS:
+        assert opendrive_schema(rev_minor) is not None
+    assert opendrive_schema(8) is None  # XML Schema 1.1: lxml cannot load it
+    notice = (SCHEMAS / "NOTICE.md").read_text(encoding="utf-8")
+    assert "ASAM license terms" in notice and "www.asam.net/license.html" in notice
+
+
+def test_a_file_that_is_not_a_map_is_an_input_error(tmp_path: Path) -> None:
+    bogus = tmp_path / "roads.txt"
+    bogus.write_text("no roads here", encoding="utf-8")
+    with pytest.raises(InputError, match=r"expected a \.net\.xml or \.xodr file"):
+        write_road_network(bogus, tmp_path / "out")
+
+
+def test_an_opendrive_map_is_copied_byte_for_byte(tmp_path: Path) -> None:
+    written = write_road_network(ESMINI_MAP, tmp_path)
+    assert written.name == "straight_500m.xodr"
+    assert written.read_bytes() == ESMINI_MAP.read_bytes()
+
+
+@pytest.mark.slow  # needs SUMO
+class TestSumoNetworkConverted:
+    def test_valid_opendrive_without_a_date(self, emitted: Emitter) -> None:
+        _, files = emitted("t_bone")
+        assert files.xodr.name == "town.xodr"
+        doc = etree.parse(str(files.xodr))
+        header = doc.getroot().find("header")
+        assert (header.get("revMajor"), header.get("revMinor")) == ("1", "4")
+        assert header.get("date") is None
+        text = files.xodr.read_text(encoding="utf-8")
+        assert "generated on" not in text and "from town.net.xml (sovarc)" in text
+        assert schema_errors(opendrive_schema(4), doc) == []
+
+    def test_the_same_network_gives_the_same_bytes(self, emitted: Emitter, tmp_path: Path) -> None:
+        _, files = emitted("t_bone")
+        assert write_road_network(TOWN, tmp_path).read_bytes() == files.xodr.read_bytes()
+
+    def test_coordinates_are_the_networks_own(self, emitted: Emitter) -> None:
+        """netconvert keeps the SUMO coordinates (no offset), so plan points are OpenDRIVE points."""
+        _, files = emitted("t_bone")
+        header = etree.parse(str(files.xodr)).getroot().find("header")
+        bounds = [float(header.get(k)) for k in ("west", "south", "east", "north")]
+        location = etree.parse(str(TOWN)).getroot().find("location")
+        assert location.get("netOffset") == "0.00,0.00"
+        assert bounds == pytest.approx([float(v) for v in location.get("convBoundary").split(",")], abs=0.01)
+
+    def test_the_oracle_names_an_invalid_road_network(self, emitted: Emitter, tmp_path: Path) -> None:
+        _, files = emitted("t_bone")
+        (tmp_path / "scenario.xosc").write_bytes(files.xosc.read_bytes())
+        text = files.xodr.read_text(encoding="utf-8").replace('<road name="" length=', '<road name="" lenght=', 1)
+        (tmp_path / "town.xodr").write_text(text, encoding="utf-8")
+        finding, _ = xodr_finding(read_scenario(tmp_path / "scenario.xosc"))
+        assert not finding.passed
+        assert finding.message.startswith("town.xodr is not valid OpenDRIVE 1.4: line ")
+        assert "lenght" in finding.message
