@@ -1,1 +1,236 @@
-"""Constraint lowering: a scenario on one site of a map, solved with Z3 (the paper's Groups 1-5)."""
+"""Constraint lowering: a scenario on one site of a map, solved with Z3 (the paper's Groups 1-5).
+
+lowered = lower(scenario, road_map, roads=3, seed=0)   # one Lowered per chosen site
+
+Steps: fill unknown facts with noted choices (assume.py), pick sites (maps.match_sites),
+build each participant's route on the site (routes.py, pedestrian.py), find where striker
+and victim can meet (contact.py), and solve starts, stops, speeds and the impact time
+(solve.py). A conflict is an UnsatError naming the IR facts that conflict.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from sovarc.compiler.lower.assume import assume
+from sovarc.compiler.lower.contact import Contact, contacts, describe
+from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
+from sovarc.compiler.lower.route import Route
+from sovarc.compiler.lower.routes import vehicle_route
+from sovarc.compiler.lower.solve import V_PED_MAX, ConflictError, Fact, Problem, Solution, solve
+from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites
+from sovarc.compiler.maps.needs import JUNCTION_MOVES
+from sovarc.dsl.errors import Diagnostic, LoweringError, Severity, UnsatError
+from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, RoadKind, Role, Scenario, Side, Speed
+from sovarc.dsl.printer import format_speed
+
+DEFAULT_LIMIT_KMH = {RoadKind.STRAIGHT: 70.0, RoadKind.INTERSECTION: 50.0, RoadKind.T_JUNCTION: 50.0}
+USUAL_SHARE = 0.8  # of the limit: the speed a vehicle with no reported speed prefers
+MAX_CONTACTS = 4  # contacts tried, best first
+
+
+@dataclass(frozen=True)
+class Lowered:
+    """A scenario staged on one site: routes, the contact, and the solved schedule."""
+
+    scenario: Scenario  # with the assumed facts filled in
+    match: SiteMatch
+    road_map: RoadMap
+    routes: dict[str, Route]
+    contact: Contact
+    solution: Solution
+    crash: CrashType
+    striker: str
+    victim: str
+    notes: tuple[str, ...]
+
+
+def lower(scenario: Scenario, road_map: RoadMap, *, roads: int = 1, seed: int = 0) -> list[Lowered]:
+    """Stage the scenario on up to `roads` distinct sites of the map."""
+    staged, notes = assume(scenario)
+    matches = match_sites(staged, road_map, n=roads, seed=seed, clamp=True)
+    return [lower_on(staged, match, road_map, notes) for match in matches]
+
+
+def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: list[str]) -> Lowered:
+    crash = scenario.crash
+    assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
+    notes = list(notes) + list(match.clamped)
+    limit, limit_fact = _limit(scenario, notes)
+    routes = _routes(scenario, match, road_map, limit, crash.striker, crash.victim)
+    for route in routes.values():
+        notes += route.notes
+    facts = _facts(scenario, routes, limit, limit_fact)
+    striker, victim = routes[crash.striker], routes[crash.victim]
+    found = contacts(striker, victim, crash.type)
+    if not found:
+        raise UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
+    problem_of = lambda c: Problem(  # noqa: E731
+        routes=routes,
+        striker=crash.striker,
+        victim=crash.victim,
+        crash=crash.type,
+        contact=c,
+        vmax={pid: _vmax(r.participant, limit, limit_fact, facts) for pid, r in routes.items()},
+        preferred={pid: _preferred(r.participant, limit) for pid, r in routes.items()},
+        facts=facts,
+        stationary=_stationary(scenario, crash.striker),
+    )
+    first_failure: ConflictError | None = None
+    for contact in found[:MAX_CONTACTS]:
+        try:
+            solution = solve(problem_of(contact))
+        except ConflictError as failure:
+            first_failure = first_failure or failure
+            continue
+        if solution.relaxed:
+            notes.append("no natural-looking timing fits: speeds or waits are at the edge of what the facts allow")
+        return Lowered(
+            scenario, match, road_map, routes, contact, solution, crash.type, crash.striker, crash.victim, tuple(notes)
+        )
+    assert first_failure is not None
+    raise UnsatError(_conflict(scenario, match, first_failure.facts))
+
+
+def _limit(scenario: Scenario, notes: list[str]) -> tuple[float, Fact]:
+    limit = scenario.road.speed_limit
+    if isinstance(limit, Speed):
+        fact = Fact("road.speed_limit", f"speed limit {format_speed(limit)}", scenario.road.meta.where("speed_limit"))
+        return limit.to_mps(), fact
+    kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else RoadKind.STRAIGHT
+    kmh = DEFAULT_LIMIT_KMH[kind]
+    notes.append(f"speed limit unknown: planned with {kmh:.0f} km/h")
+    return kmh / 3.6, Fact("road.speed_limit", f"the assumed speed limit of {kmh:.0f} km/h")
+
+
+def _reported(p: Participant) -> float | None:
+    return p.speed.to_mps() if isinstance(p.speed, Speed) else None
+
+
+def _preferred(p: Participant, limit: float) -> float:
+    if p.role is Role.PEDESTRIAN:
+        return walking_speed(_reported(p))
+    reported = _reported(p)
+    return reported if reported else USUAL_SHARE * limit
+
+
+def _vmax(p: Participant, limit: float, limit_fact: Fact, facts: dict[str, Fact]) -> tuple[float, Fact]:
+    reported = _reported(p)
+    if p.role is Role.PEDESTRIAN:
+        return max(V_PED_MAX, reported or 0.0), facts[f"{p.id}.speed"]
+    if reported:
+        return max(limit, 1.25 * reported), facts[f"{p.id}.speed"]
+    return limit, limit_fact
+
+
+def _stationary(scenario: Scenario, striker: str) -> set[str]:
+    return {
+        p.id
+        for p in scenario.participants
+        if p.id != striker
+        and p.known_actions
+        and (all(a.kind is ActionKind.STOP for a in p.known_actions) or _reported(p) == 0.0)
+    }
+
+
+def _routes(
+    scenario: Scenario, match: SiteMatch, road_map: RoadMap, limit: float, striker: str, victim: str
+) -> dict[str, Route]:
+    routes: dict[str, Route] = {}
+    people = [p for p in scenario.participants if p.role is Role.PEDESTRIAN]
+    for p in scenario.participants:
+        if p.role is Role.VEHICLE:
+            side = _driveway_side(p, scenario, striker, victim)
+            partner = scenario.participant(victim if p.id == striker else striker)
+            wrong_way = partner.lane if partner is not None and isinstance(partner.lane, int) else None
+            routes[p.id] = vehicle_route(p, match, road_map, _preferred(p, limit), side, wrong_way)
+    for p in people:
+        partner_id = victim if p.id == striker else striker
+        partner = routes.get(partner_id) or next(iter(routes.values()), None)
+        if partner is None:
+            raise LoweringError(Diagnostic(f"{p.id}: a pedestrian needs a vehicle to meet", p.meta.span))
+        crash = scenario.crash.type if isinstance(scenario.crash.type, CrashType) else None
+        exit_s = max((e.hi for e in partner.events if e.kind in JUNCTION_MOVES), default=None)
+        routes[p.id] = pedestrian_route(p, partner, match, crash, exit_s)
+    return routes
+
+
+def _driveway_side(p: Participant, scenario: Scenario, striker: str, victim: str) -> Side:
+    """A driveway move without a stated side crosses the partner's lanes when they come the other way."""
+    other = scenario.participant(victim if p.id == striker else striker)
+    if other is None or not isinstance(other.heading, Heading) or not isinstance(p.heading, Heading):
+        return Side.RIGHT
+    opposite = {"north": "south", "south": "north", "east": "west", "west": "east"}
+    return Side.LEFT if opposite[p.heading.value] == other.heading.value else Side.RIGHT
+
+
+def _facts(scenario: Scenario, routes: dict[str, Route], limit: float, limit_fact: Fact) -> dict[str, Fact]:
+    facts = {
+        "impact": Fact("impact", "the crash happens within a minute", scenario.crash.meta.span),
+        "road.speed_limit": limit_fact,
+    }
+    crash_type = scenario.crash.type
+    if isinstance(crash_type, CrashType):
+        facts[f"crash.{crash_type.value}"] = Fact(
+            f"crash.{crash_type.value}",
+            f"crash type {crash_type.value} between {scenario.crash.striker} and {scenario.crash.victim}",
+            scenario.crash.meta.where("type"),
+        )
+    for pid, route in routes.items():
+        p = route.participant
+        heading = p.heading.value if isinstance(p.heading, Heading) else "unknown"
+        facts[f"{pid}.route"] = Fact(
+            f"{pid}.route", f"{pid} heading {heading} in lane {p.lane} on this site", p.meta.where("heading")
+        )
+        facts[f"{pid}.chain"] = Fact(f"{pid}.chain", f"{pid}'s actions in order", p.meta.where("actions"))
+        reported = _reported(p)
+        facts[f"{pid}.speed"] = Fact(
+            f"{pid}.speed",
+            f"{pid} speed {format_speed(p.speed)}" if reported is not None else f"{pid}'s usual speed",
+            p.meta.where("speed"),
+        )
+        for k, action in enumerate(p.known_actions):
+            facts[f"{pid}.action{k}"] = Fact(
+                f"{pid}.action{k}", f"{pid} action {k + 1} ({action.kind.value})", action.meta.span
+            )
+        for j in range(len(p.known_actions) + 2):
+            facts[f"{pid}.curve{j}"] = Fact(
+                f"{pid}.curve{j}", f"the curves of {pid}'s route on this site", p.meta.where("actions")
+            )
+    return facts
+
+
+def _no_contact(
+    scenario: Scenario, match: SiteMatch, striker: Route, victim: Route, crash: CrashType
+) -> list[Diagnostic]:
+    seen = contacts_any(striker, victim)
+    how = "; ".join(describe(c) for c in seen) or "their paths never meet"
+    message = (
+        f"on {match.site.id}, {striker.participant.id} cannot strike {victim.participant.id} as a {crash.value} "
+        f"crash needs: {how}"
+    )
+    diagnostics = [Diagnostic(message, scenario.crash.meta.where("type"))]
+    for p in (striker.participant, victim.participant):
+        diagnostics.append(
+            Diagnostic(f"{p.id} heading and actions, from here", p.meta.where("heading"), severity=Severity.NOTE)
+        )
+    return diagnostics
+
+
+def contacts_any(striker: Route, victim: Route) -> list[Contact]:
+    found: list[Contact] = []
+    for crash in CrashType:
+        for c in contacts(striker, victim, crash):
+            if c not in found:
+                found.append(c)
+    return found
+
+
+def _conflict(scenario: Scenario, match: SiteMatch, facts: list[Fact]) -> list[Diagnostic]:
+    listed = "; ".join(f.message for f in facts)
+    head = Diagnostic(
+        f"scenario '{scenario.name}' cannot be staged on {match.site.id}: these facts conflict: {listed}",
+        next((f.span for f in facts if f.span is not None), scenario.meta.span),
+    )
+    notes = [Diagnostic(f.message, f.span, severity=Severity.NOTE) for f in facts if f.span is not None]
+    return [head, *notes]

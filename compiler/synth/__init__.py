@@ -1,1 +1,130 @@
-"""Trajectory synthesis: OMPL paths, TOPP-RA speed limits and Ruckig timing."""
+"""Trajectory synthesis: OMPL paths, Ruckig timing, TOPP-RA checks; a lowered scenario becomes a Plan.
+
+plan = synthesize(lowered, step=0.1, seed=0)
+
+Each participant's route becomes a Dubins path (paths.py), its solved schedule a
+jerk-limited arc-length profile (timing.py), and sampling both at the plan's step gives
+(t, x, y, heading, speed). TOPP-RA then checks that every vehicle's profile stays under
+the fastest drivable speed along its path (limits.py); a profile over it is an error.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from sovarc.compiler.lower import Lowered
+from sovarc.compiler.lower.route import Route
+from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.synth.limits import worst_ratio
+from sovarc.compiler.synth.paths import plan_path
+from sovarc.compiler.synth.timing import knots, sample
+from sovarc.dsl.errors import Diagnostic, SynthesisError
+from sovarc.dsl.ir import ActionKind, Role
+
+STEP = 0.1  # s between samples: SUMO's usual step for replays
+AFTER = 1.5  # s the trajectories go on after the impact
+ENVELOPE_SLACK = 1.10  # planned speed may exceed TOPP-RA's by this factor (its grid is coarse)
+
+
+def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
+    solution = lowered.solution
+    impact_time = solution.impact_time
+    end_time = math.ceil((impact_time + AFTER) / step) * step
+    times = np.round(np.arange(0.0, end_time + step / 2, step), 6)
+    notes = list(lowered.notes)
+    trajectories = []
+    for pid, route in lowered.routes.items():
+        trajectory, extra = _trajectory(lowered, pid, route, times, end_time)
+        trajectories.append(trajectory)
+        notes += extra
+    striker = next(t for t in trajectories if t.participant == lowered.striker)
+    point = _point_at(striker, impact_time)
+    plan = Plan(
+        scenario=lowered.scenario,
+        map=str(lowered.road_map.path),
+        map_sha256=lowered.road_map.sha256,
+        site=lowered.match.site.id,
+        kind=lowered.match.site.kind,
+        rotation=lowered.match.rotation,
+        seed=seed,
+        step=step,
+        impact=Impact(impact_time, point, 2.0, lowered.striker, lowered.victim, lowered.crash),
+        trajectories=tuple(trajectories),
+        notes=tuple(notes),
+    )
+    return plan
+
+
+def _trajectory(
+    lowered: Lowered, pid: str, route: Route, times: np.ndarray, end_time: float
+) -> tuple[Trajectory, list[str]]:
+    solution = lowered.solution
+    notes = []
+    vehicle = route.participant.role is Role.VEHICLE
+    path, chords = plan_path(route.line, vehicle=vehicle)
+    if chords > 2:
+        notes.append(f"{pid}: {chords} pieces of path tighter than a car turns; planned along the lane line")
+    legs = solution.legs.get(pid, ())
+    start = solution.starts[pid]
+    profile = knots(legs, start, solution.initial_dwell.get(pid, 0.0), end_time)
+    s, v, fallbacks = sample(profile, times)
+    if fallbacks:
+        notes.append(f"{pid}: {fallbacks} timing pieces kept constant acceleration (no jerk-limited fit)")
+    samples = []
+    for t, si, vi in zip(times, s, v, strict=True):
+        x, y, heading, scale = path.pose(float(si))
+        samples.append(Sample(float(t), x, y, heading, float(vi) * scale))
+    if vehicle:
+        _check_drivable(pid, samples, lowered)
+    return (
+        Trajectory(
+            participant=pid,
+            role=route.participant.role,
+            body=route.body,
+            samples=tuple(samples),
+            lanes=route.lanes,
+            edges=route.edges,
+            segments=_segments(route, profile_times=(times, s), legs=legs),
+            impact_s=solution.impact.get(pid),
+        ),
+        notes,
+    )
+
+
+def _check_drivable(pid: str, samples: list[Sample], lowered: Lowered) -> None:
+    points = np.array([(p.x, p.y) for p in samples])
+    speeds = np.array([p.speed for p in samples])
+    if float(np.ptp(points, axis=0).max()) < 1.0:
+        return  # it never moves
+    limit = max(float(speeds.max()) * 1.05, 1.0)
+    ratio = worst_ratio(points, speeds, limit)
+    if ratio > ENVELOPE_SLACK:
+        raise SynthesisError(
+            Diagnostic(
+                f"{pid}'s planned speed on {lowered.match.site.id} is {ratio:.2f} times what its path allows "
+                "under the acceleration limits (TOPP-RA)",
+                lowered.scenario.participant(pid).meta.span,  # type: ignore[union-attr]
+            )
+        )
+
+
+def _segments(route: Route, profile_times: tuple[np.ndarray, np.ndarray], legs: tuple) -> tuple[Segment, ...]:
+    times, s = profile_times
+
+    def time_at(x: float) -> float:
+        reached = np.flatnonzero(s >= x - 1e-6)
+        return float(times[reached[0]]) if len(reached) else float(times[-1])
+
+    speed = max((leg.v for leg in legs), default=0.0)
+    out = []
+    for event in route.events:
+        label = f"{event.index + 1}:{event.kind.value}"
+        cruise = 0.0 if event.kind is ActionKind.STOP else speed
+        out.append(Segment(label, event.lo, event.hi, time_at(event.lo), time_at(event.hi), cruise))
+    return tuple(out)
+
+
+def _point_at(trajectory: Trajectory, t: float) -> tuple[float, float]:
+    sample_ = trajectory.at(t)
+    return (sample_.x, sample_.y)

@@ -1,0 +1,161 @@
+"""Fill the facts a report left unknown with the choices that stage the crash, and say so.
+
+Lowering needs a heading, a lane and actions for every vehicle, and a crash type with its
+striker and victim. Each choice here follows from the facts that are known (a rear-end's
+vehicles share a heading, a head-on's oppose unless one drives on the wrong side) and is
+returned as a note that ends up in the plan. Known facts are never changed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from sovarc.dsl.ir import (
+    Action,
+    ActionKind,
+    Crash,
+    CrashType,
+    Heading,
+    Participant,
+    RoadKind,
+    Role,
+    Scenario,
+    Unknown,
+)
+
+COMPASS = (Heading.NORTH, Heading.EAST, Heading.SOUTH, Heading.WEST)
+CROSSING_KINDS = frozenset(
+    {
+        ActionKind.TURN_LEFT,
+        ActionKind.TURN_RIGHT,
+        ActionKind.DRIVE_INTO,
+        ActionKind.DRIVE_OFF,
+        ActionKind.U_TURN,
+        ActionKind.CHANGE_LANE,
+        ActionKind.RETROGRADE,
+    }
+)
+
+
+def assume(scenario: Scenario) -> tuple[Scenario, list[str]]:
+    notes: list[str] = []
+    crash = _crash(scenario, notes)
+    striker, victim = str(crash.striker), str(crash.victim)
+    people = {p.id: p for p in scenario.participants}
+    kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
+    # actions first: a heading's choice depends on them
+    for pid, p in list(people.items()):
+        people[pid] = _actions(p, people, striker, victim, crash.type, kind, notes)
+    for pid in (striker, victim, *people):
+        p = people.get(pid)
+        if p is not None and isinstance(p.heading, Unknown) and p.role is Role.VEHICLE:
+            people[pid] = _heading(p, people, striker, victim, crash.type, kind, notes)
+    for pid, p in list(people.items()):
+        if isinstance(p.lane, Unknown) and p.role is Role.VEHICLE:
+            people[pid] = _lane(p, people, striker, victim, crash.type, notes)
+    participants = tuple(people[p.id] for p in scenario.participants)
+    return replace(scenario, participants=participants, crash=crash), notes
+
+
+def _crash(scenario: Scenario, notes: list[str]) -> Crash:
+    crash = scenario.crash
+    ids = [p.id for p in scenario.participants]
+    striker, victim = crash.striker, crash.victim
+    if isinstance(striker, Unknown):
+        striker = next((i for i in ids if i != victim), ids[0])
+        notes.append(f"striker unknown: planned as {striker}")
+    if isinstance(victim, Unknown):
+        victim = next(i for i in ids if i != striker) if len(ids) > 1 else striker
+        notes.append(f"victim unknown: planned as {victim}")
+    kind = crash.type
+    if isinstance(kind, Unknown):
+        a, b = scenario.participant(str(striker)), scenario.participant(str(victim))
+        kind = CrashType.SIDE
+        if a and b and isinstance(a.heading, Heading) and isinstance(b.heading, Heading):
+            turn = (COMPASS.index(a.heading) - COMPASS.index(b.heading)) % 4
+            kind = {0: CrashType.REAR_END, 2: CrashType.FRONTAL}.get(turn, CrashType.SIDE)
+            if _wrong_way(a) != _wrong_way(b):
+                kind = {CrashType.REAR_END: CrashType.FRONTAL, CrashType.FRONTAL: CrashType.REAR_END}.get(kind, kind)
+        notes.append(f"crash type unknown: planned as {kind.value}, from the headings")
+    return replace(crash, type=kind, striker=striker, victim=victim)
+
+
+def _partner(p: Participant, people: dict[str, Participant], striker: str, victim: str) -> Participant | None:
+    other = victim if p.id == striker else striker
+    if p.id not in (striker, victim):
+        other = striker
+    return people.get(other) if other != p.id else None
+
+
+def _wrong_way(p: Participant) -> bool:
+    """Whether it ends up driving against its starting direction (retrograde, or a U-turn)."""
+    kinds = [a.kind for a in p.known_actions]
+    return (kinds.count(ActionKind.RETROGRADE) + kinds.count(ActionKind.U_TURN)) % 2 == 1
+
+
+def _actions(
+    p: Participant,
+    people: dict[str, Participant],
+    striker: str,
+    victim: str,
+    crash: CrashType,
+    kind: RoadKind | None,
+    notes: list[str],
+) -> Participant:
+    if not isinstance(p.actions, Unknown) and p.actions:
+        return p
+    if p.role is Role.PEDESTRIAN:
+        chosen = ActionKind.CROSS
+    else:
+        chosen = ActionKind.FOLLOW_LANE
+        partner = _partner(p, people, striker, victim)
+        partner_crosses = partner is not None and any(a.kind in CROSSING_KINDS for a in partner.known_actions)
+        if kind is RoadKind.STRAIGHT and crash is CrashType.SIDE and not partner_crosses:
+            chosen = ActionKind.DRIVE_INTO  # two cars along one road meet side-on only if one comes in
+    what = "unknown" if isinstance(p.actions, Unknown) else "none"
+    notes.append(f"{p.id} actions {what}: planned as {chosen.value}")
+    return replace(p, actions=(Action(chosen),))
+
+
+def _heading(
+    p: Participant,
+    people: dict[str, Participant],
+    striker: str,
+    victim: str,
+    crash: CrashType,
+    kind: RoadKind | None,
+    notes: list[str],
+) -> Participant:
+    partner = _partner(p, people, striker, victim)
+    if partner is None or not isinstance(partner.heading, Heading):
+        heading = Heading.NORTH
+        reason = "no participant to take it from"
+    else:
+        base = COMPASS.index(partner.heading)
+        if crash is CrashType.SIDE and kind is not RoadKind.STRAIGHT:
+            turn, reason = 1, f"crossing {partner.id}'s path"
+        else:
+            turn = 2 if crash is CrashType.FRONTAL else 0
+            if _wrong_way(p) != _wrong_way(partner):
+                turn = 2 - turn
+            reason = f"{'opposite' if turn == 2 else 'same'} as {partner.id}, for a {crash.value} crash"
+        heading = COMPASS[(base + turn) % 4]
+    notes.append(f"{p.id} heading unknown: planned {heading.value} ({reason})")
+    return replace(p, heading=heading)
+
+
+def _lane(
+    p: Participant, people: dict[str, Participant], striker: str, victim: str, crash: CrashType, notes: list[str]
+) -> Participant:
+    partner = _partner(p, people, striker, victim)
+    lane = 1
+    if (
+        crash is CrashType.REAR_END
+        and partner is not None
+        and isinstance(partner.lane, int)
+        and partner.heading == p.heading
+        and not any(a.kind is ActionKind.CHANGE_LANE for a in p.known_actions + partner.known_actions)
+    ):
+        lane = partner.lane
+    notes.append(f"{p.id} lane unknown: planned in lane {lane}")
+    return replace(p, lane=lane)

@@ -1,0 +1,149 @@
+"""Where the striker can meet the victim: the collision area C_A (the paper's Group 5).
+
+At impact the striker's front-bumper centre touches the face of the victim the crash type
+names: its rear (rear_end), its front (frontal) or the middle of its side (side). With the
+victim's line V and its body length L, that face is at V(u) where u = s_v - k L and
+k = 1, 0, 1/2; so a contact is a point where the striker's line meets the victim's line.
+Lines meet in two ways:
+
+- a crossing: one point (s_striker, u), the lines at an angle;
+- a shared stretch: the lines run together (one lane), in the same or opposite direction;
+  there the contact may be anywhere, so it is a range with s_v = offset +- s_striker.
+
+A crash type accepts only some: a rear-end needs a shared stretch in the same direction
+(or a shallow merge), a head-on a stretch in opposite directions (or a crossing met front
+to front), a side impact a crossing.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from sovarc.compiler.lower.route import Route
+from sovarc.dsl.ir import CrashType
+
+STEP = 0.5  # m between the points compared
+TOUCH = 0.45  # m: lines closer than this meet
+MERGE_BACK = 4.0  # m before a merge where the converging lines' angle is measured
+FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Striker at arc length s in [lo, hi] meets the victim at s_v = offset + sign * s."""
+
+    lo: float
+    hi: float
+    sign: int  # +1: same direction; -1: opposite; 0: a crossing (lo == hi, s_v = offset)
+    offset: float
+    angle: float  # degrees between the two directions of travel at the contact, 0..180
+    kind: str  # 'crossing' or 'shared'
+
+    def victim_s(self, s: float) -> float:
+        return self.offset + self.sign * s if self.sign else self.offset
+
+    @property
+    def point_s(self) -> float:
+        return (self.lo + self.hi) / 2.0
+
+
+def contacts(striker: Route, victim: Route, crash: CrashType) -> list[Contact]:
+    """Every contact the crash type accepts, best first."""
+    k = FACE[crash] * victim.body.length
+    found = [c for c in _meetings(striker, victim, k) if _accepts(crash, c)]
+    preference = {
+        CrashType.REAR_END: lambda c: (c.kind != "shared", c.angle, -c.hi),
+        CrashType.FRONTAL: lambda c: (c.kind != "shared", -c.angle, c.lo),
+        CrashType.SIDE: lambda c: (-min(c.angle, 90.0) // 15, c.lo),
+    }[crash]
+    return sorted(found, key=preference)
+
+
+def _accepts(crash: CrashType, c: Contact) -> bool:
+    if crash is CrashType.REAR_END:
+        return (c.kind == "shared" and c.sign == 1) or (c.kind == "crossing" and c.angle < 45.0)
+    if crash is CrashType.FRONTAL:
+        return (c.kind == "shared" and c.sign == -1) or (c.kind == "crossing" and c.angle >= 60.0)
+    return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)
+
+
+def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
+    a, sa = _samples(striker.line.points, striker.line.s)
+    b, sb = _samples(victim.line.points, victim.line.s)
+    ha, hb = _headings(a), _headings(b)
+    d = np.hypot(a[:, None, 0] - b[None, :, 0], a[:, None, 1] - b[None, :, 1])
+    nearest = d.argmin(axis=1)
+    close = d[np.arange(len(a)), nearest] < TOUCH
+    angle = np.abs((ha - hb[nearest] + 180.0) % 360.0 - 180.0)
+    parallel = close & ((angle < 20.0) | (angle > 160.0))
+    found: list[Contact] = []
+    for lo, hi in _runs(parallel):
+        if sa[hi] - sa[lo] < 8.0:
+            continue  # a brief touch: counted as a crossing below
+        same = float(np.median(angle[lo : hi + 1])) < 90.0
+        sign = 1 if same else -1
+        offsets = sb[nearest[lo : hi + 1]] - sign * sa[lo : hi + 1]
+        offset = float(np.median(offsets)) + k
+        found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
+        close[lo : hi + 1] = False
+        merge = _merge(a, b, ha, hb, d, nearest, lo) if same else None
+        if merge is not None:
+            s_striker, u, turn = merge
+            found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
+    for lo, hi in _runs(close):
+        i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
+        s_striker, u = float(sa[i]), float(sb[nearest[i]])
+        found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
+    return found
+
+
+def _merge(
+    a: np.ndarray, b: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int
+) -> tuple[float, float, float] | None:
+    """Where two lines that come from different places join one lane, as (s, u, angle): the
+    lines converge at a shallow angle, and the side of one meets the other's front there."""
+    j = int(nearest[lo])
+    back = int(MERGE_BACK / STEP)
+    if lo < back or j < back:
+        return None
+    striker_apart = d[lo - back].min() > 1.0
+    victim_apart = d[:, j - back].min() > 1.0
+    if not (striker_apart or victim_apart):
+        return None
+    turn = float(abs((ha[lo - back] - hb[j - back] + 180.0) % 360.0 - 180.0))
+    return lo * STEP, j * STEP, max(turn, 5.0)
+
+
+def _samples(points: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    at = np.arange(0.0, s[-1] + 1e-9, STEP)
+    return np.column_stack((np.interp(at, s, points[:, 0]), np.interp(at, s, points[:, 1]))), at
+
+
+def _headings(points: np.ndarray) -> np.ndarray:
+    d = np.diff(points, axis=0, append=points[-1:] + (points[-1:] - points[-2:-1]))
+    return np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0
+
+
+def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    runs, start = [], None
+    for i, flag in enumerate(mask):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            runs.append((start, i - 1))
+            start = None
+    if start is not None:
+        runs.append((start, len(mask) - 1))
+    return runs
+
+
+def describe(c: Contact) -> str:
+    if c.kind == "crossing":
+        return f"paths cross at {c.angle:.0f} degrees"
+    return f"paths share {c.hi - c.lo:.0f} m of lane, {'same' if c.sign == 1 else 'opposite'} direction"
+
+
+def is_close(a: float, b: float) -> bool:
+    return math.isclose(a, b, abs_tol=1e-6)

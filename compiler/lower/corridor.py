@@ -1,0 +1,197 @@
+"""Moves within one road: the actions a vehicle performs between two junctions.
+
+A `Corridor` is one road seen in a direction of travel: its own lanes (right-most first)
+and the other direction's lanes, all as lines running the way the vehicle drives. A
+`Drive` walks along it applying actions to the line it follows: lane changes, crossing
+into the other direction's lanes (retrograde), U-turns, and leaving the road to either side
+or entering it from a driveway. Each action takes a stretch of the line, recorded as an event.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat
+from sovarc.compiler.lower.route import change_length, unit
+from sovarc.compiler.maps import Arm, LaneInfo
+from sovarc.dsl.ir import ActionKind, Side
+
+OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
+DRIVEWAY = 8.0  # m of driveway before (or after) the curve
+
+
+@dataclass(frozen=True)
+class Corridor:
+    own: tuple[LaneInfo, ...]  # right-most first, shapes in the direction of travel
+    other: tuple[LaneInfo, ...]  # the other direction's lanes, right-most (of theirs) first
+
+    @classmethod
+    def entering(cls, arm: Arm) -> Corridor:
+        """The road of `arm` driven towards the junction (or along a straight site's heading)."""
+        return cls(arm.incoming, arm.outgoing)
+
+    @classmethod
+    def leaving(cls, arm: Arm) -> Corridor:
+        return cls(arm.outgoing, arm.incoming)
+
+    def turned(self) -> Corridor:
+        return Corridor(self.other, self.own)
+
+    def own_line(self, number: int) -> Polyline:
+        return Polyline(self.own[_clamp(number, len(self.own)) - 1].shape)
+
+    def other_line(self, number: int) -> Polyline:
+        """The other direction's lane `number`, as a line running our way."""
+        return Polyline(self.other[_clamp(number, len(self.other)) - 1].shape).reversed()
+
+    def half_width(self) -> tuple[float, float]:
+        """Distance from the centre of our lane 1 to the road's right edge, and to its far left edge."""
+        right = self.own[0].width / 2.0
+        left = sum(lane.width for lane in self.own) - right + sum(lane.width for lane in self.other)
+        return right, left
+
+
+def _clamp(number: int, count: int) -> int:
+    return min(max(number, 1), count)
+
+
+@dataclass
+class Drive:
+    """Builds a line along a corridor, one action at a time, from arc length `cursor` on."""
+
+    corridor: Corridor
+    line: Polyline
+    lane: int  # current lane number; in `other` lanes when `against` is set
+    against: bool = False
+    speed: float = 13.9  # m/s, the nominal speed: sets how long a lane change is
+    stretches: dict[int, tuple[float, float]] = field(default_factory=dict)
+    lanes: set[str] = field(default_factory=set)
+    edges: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    start_off_road: bool = False
+    left_road: bool = False
+    wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
+
+    def __post_init__(self) -> None:
+        self._use(self.corridor.own[self.lane - 1])
+
+    def _use(self, lane: LaneInfo) -> None:
+        self.lanes.add(lane.id)
+        if lane.edge not in self.edges:
+            self.edges.append(lane.edge)
+
+    def _target(self, number: int, against: bool) -> Polyline:
+        lanes = self.corridor.other if against else self.corridor.own
+        number = _clamp(number, len(lanes))
+        self._use(lanes[number - 1])
+        self.lane, self.against = number, against
+        return self.corridor.other_line(number) if against else self.corridor.own_line(number)
+
+    def change_lane(self, index: int, at: float, to: int | Side | None) -> float:
+        number = self.lane + (1 if to is Side.LEFT else -1) if isinstance(to, Side) else to or self.lane + 1
+        count = len(self.corridor.other if self.against else self.corridor.own)
+        if not 1 <= number <= count or number == self.lane:
+            self.notes.append(f"action {index + 1}: lane {number} does not exist here; changed to a neighbour lane")
+            number = self.lane - 1 if self.lane > 1 else self.lane + 1
+            if number > count:
+                return at  # a one-lane road: nothing to change to
+        for n in range(self.lane + (1 if number > self.lane else -1), number + (1 if number > self.lane else -1)):
+            self._use((self.corridor.other if self.against else self.corridor.own)[n - 1])
+        return self._blend(index, at, self._target(number, self.against))
+
+    def retrograde(self, index: int, at: float) -> float:
+        """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line."""
+        lanes = self.corridor.own if self.against else self.corridor.other
+        number = self.wrong_way_lane or len(lanes)
+        return self._blend(index, at, self._target(min(number, len(lanes)), not self.against))
+
+    def _blend(self, index: int, at: float, target: Polyline) -> float:
+        end = at + change_length(self.speed)
+        end = min(end, self.line.length - 5.0)
+        if end - at < 8.0:
+            self.notes.append(f"action {index + 1}: squeezed into {end - at:.0f} m of road")
+        self.line = blend(self.line, target, at, end)
+        self.stretches[index] = (at, end)
+        return end
+
+    def u_turn(self, index: int, at: float, to: int | Side | None) -> float:
+        number = to if isinstance(to, int) else len(self.corridor.other if not self.against else self.corridor.own)
+        heading = self.line.heading(at)
+        p0 = self.line.point(at)
+        self.corridor = self.corridor.turned()
+        target = self._target(number, self.against)
+        s1, _ = target.project(p0)
+        p1 = target.point(s1)
+        width = math.dist(p0, p1)
+        reach = max(width * 0.9, 3.0)
+        d = unit(heading)
+        u = np.linspace(0.0, 1.0, 24)[:, None]
+        c0 = np.asarray(p0) + reach * np.asarray(d)
+        c1 = np.asarray(p1) + reach * np.asarray(d)
+        arc = (
+            (1 - u) ** 3 * np.asarray(p0) + 3 * (1 - u) ** 2 * u * c0 + 3 * (1 - u) * u**2 * c1 + u**3 * np.asarray(p1)
+        )
+        head = self.line.sub(0.0, at)
+        tail = target.sub(s1, target.length)
+        self.line = concat([head, Polyline(arc), tail])
+        end = head.length + Polyline(arc).length
+        self.stretches[index] = (at, end)
+        return end
+
+    def leave(self, index: int, at: float, side: Side) -> float:
+        """Turn off the road into a driveway or side road on `side`."""
+        heading = self.line.heading(at)
+        right, left = self.corridor.half_width()
+        if side is Side.LEFT:
+            for lane in self.corridor.other:
+                self._use(lane)
+        lateral = (right if side is Side.RIGHT else left) + OFF_ROAD
+        if self.against:
+            lateral = right + OFF_ROAD if side is Side.LEFT else left + OFF_ROAD
+        turn = 90.0 if side is Side.RIGHT else -90.0
+        forward = lateral * 0.8
+        d, n = unit(heading), unit(heading + turn)
+        p0 = self.line.point(at)
+        p1 = (p0[0] + forward * d[0] + lateral * n[0], p0[1] + forward * d[1] + lateral * n[1])
+        curve = bezier(p0, heading, p1, heading + turn)
+        tail_end = (p1[0] + DRIVEWAY * n[0], p1[1] + DRIVEWAY * n[1])
+        head = self.line.sub(0.0, at)
+        self.line = concat([head, curve, Polyline([p1, tail_end])])
+        self.left_road = True
+        end = head.length + curve.length
+        self.stretches[index] = (at, end)
+        return end
+
+    def enter(self, index: int, at: float, side: Side) -> float:
+        """Start in a driveway on `side` and drive onto the road, reaching the current lane at `at`."""
+        heading = self.line.heading(at)
+        right, left = self.corridor.half_width()
+        if side is Side.LEFT:
+            for lane in self.corridor.other:
+                self._use(lane)
+        lateral = (right if side is Side.RIGHT else left) + OFF_ROAD
+        turn = 90.0 if side is Side.RIGHT else -90.0  # the driveway lies this way of the heading
+        back = lateral * 0.8
+        d, n = unit(heading), unit(heading + turn)
+        p1 = self.line.point(at)
+        p0 = (p1[0] - back * d[0] + lateral * n[0], p1[1] - back * d[1] + lateral * n[1])
+        facing = (heading + turn + 180.0) % 360.0
+        start = (p0[0] - DRIVEWAY * unit(facing)[0], p0[1] - DRIVEWAY * unit(facing)[1])
+        curve = bezier(p0, facing, p1, heading)
+        tail = self.line.sub(at, self.line.length)
+        self.line = concat([Polyline([start, p0]), curve, tail])
+        self.start_off_road = True
+        end = DRIVEWAY + curve.length
+        self.stretches[index] = (0.0, end)
+        return end
+
+
+def side_of(kind: ActionKind, neighbours: tuple[ActionKind, ...], default: Side) -> Side:
+    """Which side a driveway move goes to: left when a left turn goes with it."""
+    if kind is ActionKind.TURN_LEFT or ActionKind.TURN_LEFT in neighbours:
+        return Side.LEFT
+    if kind is ActionKind.TURN_RIGHT or ActionKind.TURN_RIGHT in neighbours:
+        return Side.RIGHT
+    return default

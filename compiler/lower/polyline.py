@@ -1,0 +1,158 @@
+"""Polylines with arc length: the geometry routes, contact search and synthesis share.
+
+Headings are compass degrees (0 = north, clockwise), as everywhere in sovarc.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+
+Point = tuple[float, float]
+
+
+class Polyline:
+    """An immutable polyline; `s` is the arc length at each vertex, from 0."""
+
+    __slots__ = ("points", "s")
+
+    def __init__(self, points: Sequence[Point] | np.ndarray) -> None:
+        array = np.asarray(points, dtype=float).reshape(-1, 2)
+        if len(array) >= 2:  # drop repeated vertices: they have no direction
+            keep = np.concatenate(([True], np.hypot(*np.diff(array, axis=0).T) > 1e-9))
+            array = array[keep]
+        if len(array) < 2:
+            raise ValueError("a polyline needs two distinct points")
+        self.points = array
+        self.s = np.concatenate(([0.0], np.cumsum(np.hypot(*np.diff(array, axis=0).T))))
+
+    @property
+    def length(self) -> float:
+        return float(self.s[-1])
+
+    def point(self, s: float) -> Point:
+        s = min(max(s, 0.0), self.length)
+        return (float(np.interp(s, self.s, self.points[:, 0])), float(np.interp(s, self.s, self.points[:, 1])))
+
+    def heading(self, s: float) -> float:
+        """Direction of travel at arc length s (of the segment containing it)."""
+        k = int(np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, len(self.s) - 2))
+        dx, dy = self.points[k + 1] - self.points[k]
+        return math.degrees(math.atan2(dx, dy)) % 360.0
+
+    def sub(self, start: float, end: float) -> Polyline:
+        """The part between two arc lengths (start < end)."""
+        start, end = max(start, 0.0), min(end, self.length)
+        inner = self.points[(self.s > start) & (self.s < end)]
+        return Polyline(np.vstack([self.point(start), inner, self.point(end)]))
+
+    def reversed(self) -> Polyline:
+        return Polyline(self.points[::-1])
+
+    def resample(self, step: float) -> np.ndarray:
+        """Points every `step` metres (and the last point)."""
+        count = max(2, math.ceil(self.length / step) + 1)
+        at = np.linspace(0.0, self.length, count)
+        return np.column_stack((np.interp(at, self.s, self.points[:, 0]), np.interp(at, self.s, self.points[:, 1])))
+
+    def smoothed(self, window: float = 6.0) -> Polyline:
+        """Resampled every metre and averaged over `window` metres: kinks where two lane shapes
+        meet are rounded off, curves wider than the window keep their shape. Ends stay put."""
+        points = self.resample(1.0)
+        half = int(window // 2)
+        if len(points) <= 2 * half + 1:
+            return self
+        kernel = np.ones(2 * half + 1) / (2 * half + 1)
+        padded = np.vstack([np.repeat(points[:1], half, axis=0), points, np.repeat(points[-1:], half, axis=0)])
+        smooth = np.column_stack([np.convolve(padded[:, i], kernel, mode="valid") for i in (0, 1)])
+        smooth[0], smooth[-1] = points[0], points[-1]
+        return Polyline(smooth)
+
+    def project(self, p: Point) -> tuple[float, float]:
+        """(arc length of the closest point, distance to it)."""
+        a, b = self.points[:-1], self.points[1:]
+        ab = b - a
+        lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
+        u = np.clip(((np.asarray(p) - a) * ab).sum(axis=1) / lengths2, 0.0, 1.0)
+        closest = a + ab * u[:, None]
+        d = np.hypot(*(closest - np.asarray(p)).T)
+        k = int(np.argmin(d))
+        return float(self.s[k] + u[k] * math.sqrt(lengths2[k])), float(d[k])
+
+    def offset(self, lateral: float) -> Polyline:
+        """The polyline shifted sideways, to the right of travel for positive `lateral`."""
+        normals = _vertex_normals(self.points)
+        return Polyline(self.points + lateral * normals)
+
+    def curvature_radius(self, window: float = 6.0) -> np.ndarray:
+        """Radius of curvature at each vertex, over a window of +-window/2 metres (inf if straight)."""
+        radii = np.full(len(self.s), np.inf)
+        for k, s in enumerate(self.s):
+            a, b = max(0.0, s - window / 2), min(self.length, s + window / 2)
+            if b - a < 1.0:
+                continue
+            turn = abs(_angle_diff(self.heading(b - 1e-6), self.heading(a)))
+            if turn > 1e-3:
+                radii[k] = (b - a) / math.radians(turn)
+        return radii
+
+
+def concat(parts: Iterable[Polyline]) -> Polyline:
+    return Polyline(np.vstack([p.points for p in parts]))
+
+
+def blend(first: Polyline, second: Polyline, start: float, end: float) -> Polyline:
+    """Follow `first` until `start`, move smoothly across to `second` by `end`, then follow it.
+
+    Both polylines run side by side (two lanes of one road); arc lengths are `first`'s.
+    The sideways move follows a smoothstep, as a lane change does.
+    """
+    before = first.sub(0.0, start).points
+    steps = np.linspace(start, end, max(3, math.ceil((end - start) / 2.0) + 1))
+    middle = []
+    for s in steps:
+        w = (s - start) / (end - start)
+        w = w * w * (3.0 - 2.0 * w)
+        a = np.asarray(first.point(s))
+        b = np.asarray(second.point(second.project(first.point(s))[0]))
+        middle.append((1.0 - w) * a + w * b)
+    tail_start = second.project(first.point(end))[0]
+    after = second.sub(tail_start, second.length).points
+    return Polyline(np.vstack([before, np.asarray(middle), after]))
+
+
+def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16) -> Polyline:
+    """A cubic curve leaving p0 in compass heading h0 and arriving at p1 in heading h1."""
+    reach = math.dist(p0, p1) / 3.0
+    d0, d1 = _unit(h0), _unit(h1)
+    c0 = (p0[0] + reach * d0[0], p0[1] + reach * d0[1])
+    c1 = (p1[0] - reach * d1[0], p1[1] - reach * d1[1])
+    u = np.linspace(0.0, 1.0, samples)[:, None]
+    pts = (
+        (1 - u) ** 3 * np.asarray(p0)
+        + 3 * (1 - u) ** 2 * u * np.asarray(c0)
+        + 3 * (1 - u) * u**2 * np.asarray(c1)
+        + u**3 * np.asarray(p1)
+    )
+    return Polyline(pts)
+
+
+def _unit(heading: float) -> Point:
+    rad = math.radians(heading)
+    return (math.sin(rad), math.cos(rad))
+
+
+def _angle_diff(a: float, b: float) -> float:
+    d = (a - b) % 360.0
+    return d - 360.0 if d > 180.0 else d
+
+
+def _vertex_normals(points: np.ndarray) -> np.ndarray:
+    """Unit normals pointing to the right of travel, averaged at inner vertices."""
+    d = np.diff(points, axis=0)
+    d /= np.maximum(np.hypot(*d.T), 1e-12)[:, None]
+    right = np.column_stack((d[:, 1], -d[:, 0]))
+    normals = np.vstack([right[:1], (right[:-1] + right[1:]) / 2.0, right[-1:]])
+    return normals / np.maximum(np.hypot(*normals.T), 1e-12)[:, None]

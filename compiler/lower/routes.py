@@ -1,0 +1,231 @@
+"""Build every vehicle's route on a matched site (pedestrians: see pedestrian.py).
+
+On a junction site a vehicle drives its arm's lane to the stop line, takes the junction
+connection its manoeuvre names (SUMO's own internal lanes, so the line is a lane SUMO
+knows), and leaves on the lane it enters. A vehicle whose actions name no manoeuvre goes
+straight across when it can (else turns right, else left), and the route says so in a note.
+On a straight site it drives its lane along the road. Actions before and after the
+junction are applied by a `Drive` along the road they happen on.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
+from sovarc.compiler.lower.polyline import Polyline, bezier, concat
+from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
+from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
+from sovarc.compiler.maps.needs import JUNCTION_MOVES
+from sovarc.compiler.plan import CAR
+from sovarc.dsl.errors import Diagnostic, LoweringError
+from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
+
+ROAD_MOVES = frozenset({ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.DRIVE_OFF})
+DEFAULT_MOVES = (ActionKind.GO_ACROSS, ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT)
+GAP = 10.0  # m between two actions' stretches
+
+
+def vehicle_route(
+    p: Participant, match: SiteMatch, road_map: RoadMap, speed: float, side: Side, wrong_way_lane: int | None = None
+) -> Route:
+    """`side`: where a driveway move without a stated side goes; `wrong_way_lane`: which lane of the
+    other direction a retrograde move drives in (the crash partner's), both chosen by the caller."""
+    placement = match.placement(p.id)
+    if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
+        raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))
+    arm = next(a for a in match.site.arms if a.id == placement.arm)
+    lane = placement.lane or 1
+    corridor = Corridor.entering(arm)
+    drive = Drive(corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane)
+    actions = p.known_actions
+    if match.site.kind is RoadKind.STRAIGHT:
+        _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
+        entry = None
+    else:
+        entry = _through_junction(drive, p, match, road_map, side)
+    events = order_stops(actions, drive.stretches, drive.line.length)
+    first = min((e.lo for e in events if e.kind is not ActionKind.STOP), default=entry or drive.line.length * 0.6)
+    if entry is not None:
+        events = [_at_stop_line(e, entry, actions) for e in events]
+    starts_at_rest = bool(actions) and actions[0].kind is ActionKind.STOP
+    return Route(
+        participant=p,
+        body=CAR,
+        line=drive.line,
+        events=events,
+        lanes=tuple(sorted(drive.lanes)),
+        edges=tuple(drive.edges),
+        start_hi=max(0.0, first - LEAD) if not drive.start_off_road else 0.0,
+        starts_at_rest=starts_at_rest or drive.start_off_road,
+        notes=[f"{p.id} {n}" for n in drive.notes],
+    )
+
+
+def _along(drive: Drive, actions: tuple[Any, ...], indices: range, *, start: float, side: Side) -> float:
+    """Apply the actions with `indices` along the current road, from arc length `start`."""
+    cursor = start
+    kinds = tuple(a.kind for a in actions)
+    for k in indices:
+        action = actions[k]
+        kind = action.kind
+        if drive.left_road:
+            break
+        if kind is ActionKind.CHANGE_LANE:
+            cursor = drive.change_lane(k, cursor, action.to) + GAP
+        elif kind is ActionKind.RETROGRADE:
+            cursor = drive.retrograde(k, cursor) + GAP
+        elif kind is ActionKind.U_TURN:
+            cursor = drive.u_turn(k, cursor, action.to) + GAP
+        elif kind in ROAD_MOVES:
+            neighbours = kinds[max(0, k - 1) : k + 2]
+            cursor = drive.leave(k, cursor, side_of(kind, neighbours, side))
+        elif kind is ActionKind.DRIVE_INTO:
+            neighbours = kinds[max(0, k - 1) : k + 2]
+            cursor = drive.enter(k, cursor, side_of(kind, neighbours, side)) + GAP
+    return cursor
+
+
+def _through_junction(drive: Drive, p: Participant, match: SiteMatch, road_map: RoadMap, side: Side) -> float:
+    """Extend the drive's line across the junction; returns the stop line's arc length."""
+    actions = p.known_actions
+    site = match.site
+    move_at = next((k for k, a in enumerate(actions) if a.kind in JUNCTION_MOVES), None)
+    arm = next(a for a in site.arms if a.id == match.placement(p.id).arm)  # type: ignore[union-attr]
+    before = range(move_at if move_at is not None else len(actions))
+    after = range(move_at + 1, len(actions)) if move_at is not None else range(0)
+    if move_at is None:
+        move = _default_move(site, arm)
+        drive.notes.append(f"names no manoeuvre at the junction: planned to {move.value}")
+    else:
+        move = actions[move_at].kind
+    _along(drive, actions, before, start=max(LEAD, 0.35 * drive.line.length), side=side)
+    if drive.left_road:
+        return drive.line.length
+    entry = drive.line.length
+    to = actions[move_at].to if move_at is not None else None
+    turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map)
+    exit_line = exit_corridor.own_line(exit_number)
+    drive.line = concat([drive.line, turn, exit_line])
+    drive.corridor, drive.lane, drive.against = exit_corridor, exit_number, False
+    drive._use(exit_corridor.own[exit_number - 1])
+    if move_at is not None:
+        drive.stretches[move_at] = (entry, entry + turn.length)
+    _along(drive, actions, after, start=entry + turn.length + GAP, side=side)
+    return entry
+
+
+def _default_move(site: Any, arm: Arm) -> ActionKind:
+    for move in DEFAULT_MOVES:
+        if any(c.direction in JUNCTION_MOVES[move] for c in site.connections_from(arm)):
+            return move
+    return ActionKind.U_TURN
+
+
+def _junction_line(
+    drive: Drive, arm: Arm, move: ActionKind, to: Any, match: SiteMatch, road_map: RoadMap
+) -> tuple[Polyline, Corridor, int]:
+    """The line across the junction, the corridor it leaves on and the lane number it enters."""
+    end = drive.line.point(drive.line.length)
+    heading = drive.line.heading(drive.line.length)
+    if drive.against or move is ActionKind.U_TURN:
+        exit_arm = arm if move is ActionKind.U_TURN else _arm_for_move(match, arm, move)
+        corridor = Corridor.leaving(exit_arm)
+        number = min(to if isinstance(to, int) else len(corridor.own), len(corridor.own))
+        start = corridor.own_line(number)
+        if move is ActionKind.U_TURN:
+            turn = Polyline([end, *_u_bend(end, heading, start.point(0.0)), start.point(0.0)])
+        else:
+            turn = bezier(end, heading, start.point(0.0), start.heading(0.0))
+        return turn, corridor, number
+    current = drive.corridor.own[drive.lane - 1]
+    connection = _pick_connection(match, arm, move, current, to)
+    if connection.from_lane != current.id:
+        drive.notes.append(f"moved to lane {_number(arm, connection.from_lane)} to {move.value}")
+    target = _lane(match, connection.to_lane)
+    exit_arm = match.site.arm_of_lane(connection.to_lane)
+    assert exit_arm is not None
+    corridor = Corridor.leaving(exit_arm)
+    shape = _via_shape(road_map, connection)
+    if shape is None:
+        turn = bezier(end, heading, target.shape[0], Polyline(target.shape).heading(0.0))
+    else:
+        turn = Polyline([end, *shape, target.shape[0]])
+    drive.lanes.update(_via_lanes(road_map, connection))
+    return turn, corridor, target.number
+
+
+def _u_bend(p0: tuple[float, float], heading: float, p1: tuple[float, float]) -> list[tuple[float, float]]:
+    from sovarc.compiler.lower.route import unit
+
+    width = max(((p0[0] - p1[0]) ** 2 + (p0[1] - p1[1]) ** 2) ** 0.5, 3.0)
+    d = unit(heading)
+    reach = width * 0.9
+    return [(p0[0] + reach * d[0], p0[1] + reach * d[1]), (p1[0] + reach * d[0], p1[1] + reach * d[1])]
+
+
+def _arm_for_move(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm:
+    """The arm a manoeuvre leaves by. Slots run clockwise by the heading of ENTERING traffic,
+    so straight ahead leaves by the opposite slot, a left turn by the next slot clockwise."""
+    wanted = arm.slot + {ActionKind.TURN_LEFT: 1, ActionKind.TURN_RIGHT: 3}.get(move, 2)
+    found = match.site.arm_in_slot(wanted)
+    return found if found is not None and found.outgoing else arm
+
+
+def _pick_connection(match: SiteMatch, arm: Arm, move: ActionKind, current: LaneInfo, to: Any) -> Connection:
+    options = [c for c in match.site.connections_from(arm) if c.direction in JUNCTION_MOVES[move]]
+    if not options:
+        raise LoweringError(Diagnostic(f"arm {arm.id} of {match.site.id} has no connection to {move.value}"))
+    wanted_to = to if isinstance(to, int) else current.number
+
+    def rank(c: Connection) -> tuple[int, int, str, str]:
+        return (
+            abs(_number(arm, c.from_lane) - current.number),
+            abs(_lane(match, c.to_lane).number - wanted_to),
+            c.from_lane,
+            c.to_lane,
+        )
+
+    return min(options, key=rank)
+
+
+def _number(arm: Arm, lane_id: str) -> int:
+    return next(lane.number for lane in arm.incoming if lane.id == lane_id)
+
+
+def _lane(match: SiteMatch, lane_id: str) -> LaneInfo:
+    return next(lane for a in match.site.arms for lane in a.outgoing + a.incoming if lane.id == lane_id)
+
+
+def _via_chain(road_map: RoadMap, connection: Connection) -> list[Any]:
+    """The internal lanes a connection runs on, in order (SUMO splits some left turns in two)."""
+    chain: list[Any] = []
+    via = connection.via
+    while via:
+        lane = road_map.net.getLane(via)
+        chain.append(lane)
+        via = next((c.getViaLaneID() for c in lane.getOutgoing() if c.getViaLaneID()), None)
+        if len(chain) > 4:
+            break
+    return chain
+
+
+def _via_shape(road_map: RoadMap, connection: Connection) -> list[tuple[float, float]] | None:
+    chain = _via_chain(road_map, connection)
+    if not chain:
+        return None
+    return [tuple(p[:2]) for lane in chain for p in lane.getShape()]  # type: ignore[misc]
+
+
+def _via_lanes(road_map: RoadMap, connection: Connection) -> list[str]:
+    return [lane.getID() for lane in _via_chain(road_map, connection)]
+
+
+def _at_stop_line(event: Event, entry: float, actions: Any) -> Event:
+    """A stop just before the junction manoeuvre waits at the stop line."""
+    if event.kind is not ActionKind.STOP:
+        return event
+    following = actions[event.index + 1].kind if event.index + 1 < len(actions) else None
+    if following in JUNCTION_MOVES and event.hi >= entry - 2.0:
+        return Event(event.index, event.kind, entry - 1.0, entry - 1.0)
+    return event

@@ -1,0 +1,312 @@
+"""The constraint problem of one scenario on one site, solved with Z3.
+
+Every participant drives its route in legs: a leg starts moving or from rest, cruises at
+one speed, and ends at a stop or runs on. Unknowns: where each participant starts, where
+it stops (when the site leaves that open), each leg's speed and duration, each stop's
+dwell, where on the contact the crash happens, and the impact time t_hit. The constraints are
+the paper's groups:
+
+- Group 1: starts and stops on the route, in range; a lead before the first action.
+- Group 2: the route's geometry (built by routes.py); its curves cap speeds, below.
+- Group 3: speeds positive, within the limit (or the reported speed), within the curve caps.
+- Group 4: legs chain: a leg ends where the next begins, with the dwell between.
+- Group 5: striker and victim reach the contact at the same t_hit, at the faces the crash
+  type names; a rear-end striker is faster than its victim.
+
+A leg from rest accelerates at A_UP and one ending at rest brakes at B_DOWN (a trapezoid
+speed profile), which makes the problem polynomial; Z3 solves it exactly. Each constraint
+is tracked under a `Fact` that points at the IR text it comes from, so an unsatisfiable
+problem is reported as the set of conflicting facts, with their spans.
+
+Two passes: first with preferences that make a natural-looking crash (speeds near the
+reported or usual ones, a few seconds of approach); if that fails, with only the hard
+facts. Only the second pass's failure is an error.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+import z3
+from sovarc.compiler.lower.contact import Contact
+from sovarc.compiler.lower.route import LEAD, Route
+from sovarc.dsl.ir import ActionKind, CrashType, Role
+
+A_UP = 2.0  # m/s^2, starting from rest
+B_DOWN = 3.0  # m/s^2, braking to rest
+DWELL = 0.5  # s, the least a stop lasts
+NICE_DWELL = 1.5  # s
+V_MIN = {Role.VEHICLE: 1.5, Role.PEDESTRIAN: 0.5}  # m/s while moving
+V_PED_MAX = 3.0
+T_MAX = 60.0  # s
+NICE_T_MAX = 25.0
+REAR_END_GAIN = 1.5  # m/s a rear-end striker is faster than its moving victim
+
+
+@dataclass(frozen=True)
+class Fact:
+    """A source of constraints: what it says and where the IR says it."""
+
+    label: str
+    message: str
+    span: Any = None  # dsl.span.Span or None for facts of the site
+
+
+@dataclass
+class Leg:
+    start: Any  # z3 expression (m)
+    end: Any | None  # None: runs on to the end of the plan
+    from_rest: bool
+    to_rest: bool
+    v: Any
+    t: Any  # duration; for an open leg, up to the impact (or the leg's own start time)
+    begin: Any  # z3 expression: time the leg starts (s)
+
+
+@dataclass
+class Motion:
+    """The unknowns of one participant."""
+
+    route: Route
+    start: Any
+    initial_dwell: Any | None
+    legs: list[Leg] = field(default_factory=list)
+    dwells: list[Any] = field(default_factory=list)  # after legs[i] when it ends at rest
+    impact_leg: int | None = None
+    impact_s: Any | None = None
+    stopped_at_impact: bool = False
+
+
+@dataclass(frozen=True)
+class LegValues:
+    start: float
+    end: float | None
+    from_rest: bool
+    to_rest: bool
+    v: float
+    begin: float
+    duration: float | None
+    dwell: float  # after it, when it ends at rest
+
+
+@dataclass(frozen=True)
+class Solution:
+    impact_time: float
+    impact: dict[str, float]  # participant -> arc length at impact (striker and victim)
+    legs: dict[str, tuple[LegValues, ...]]
+    initial_dwell: dict[str, float]
+    starts: dict[str, float]
+    relaxed: bool  # the natural-looking pass failed; only hard facts hold
+
+
+class ConflictError(Exception):
+    def __init__(self, facts: list[Fact]) -> None:
+        super().__init__(", ".join(f.label for f in facts))
+        self.facts = facts
+
+
+@dataclass
+class Problem:
+    routes: dict[str, Route]
+    striker: str
+    victim: str
+    crash: CrashType
+    contact: Contact
+    vmax: dict[str, tuple[float, Fact]]  # participant -> (hard speed bound, the fact behind it)
+    preferred: dict[str, float]  # participant -> preferred cruise speed
+    facts: dict[str, Fact]  # by label
+    stationary: set[str] = field(default_factory=set)  # participants stopped throughout
+
+
+def solve(problem: Problem) -> Solution:
+    try:
+        return _solve(problem, nice=True)
+    except ConflictError:
+        return _solve(problem, nice=False)
+
+
+def _solve(problem: Problem, nice: bool) -> Solution:
+    solver = z3.Solver()
+    solver.set("random_seed", 0)
+    solver.set("timeout", 4000)
+    tracked: dict[str, Fact] = {}
+
+    def need(label: str, constraint: Any) -> None:
+        fact = problem.facts[label]
+        name = f"{label}#{len(tracked)}"
+        tracked[name] = fact
+        solver.assert_and_track(constraint, z3.Bool(name))
+
+    t_hit = z3.Real("t_hit")
+    need("impact", z3.And(t_hit >= 2.0, (NICE_T_MAX if nice else T_MAX) >= t_hit))
+    motions = {pid: _motion(pid, r, problem, need, nice) for pid, r in problem.routes.items()}
+    _contact(problem, motions, t_hit, need, nice)
+    result = solver.check()
+    if result == z3.unknown:
+        raise ConflictError([problem.facts["impact"]])
+    if result == z3.unsat:
+        core = sorted({tracked[str(b)].label for b in solver.unsat_core()})
+        raise ConflictError([problem.facts[label] for label in core])
+    return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
+
+
+def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> Motion:
+    role = route.participant.role
+    stops = route.stops()
+    actions = route.participant.known_actions
+    final_stop = (
+        pid == problem.victim
+        and bool(stops)
+        and bool(actions)
+        and actions[-1].kind is ActionKind.STOP
+        and stops[-1].index == len(actions) - 1
+    )
+    if pid == problem.striker and stops and actions and actions[-1].kind is ActionKind.STOP:
+        stops = stops[:-1]  # a striker's last stop comes after the crash
+    positions = []
+    for k, stop in enumerate(stops):
+        q = z3.Real(f"{pid}.stop{k}")
+        label = f"{pid}.action{stop.index}"
+        if final_stop and k == len(stops) - 1:
+            need(label, z3.And(q >= 0.0, q <= route.line.length))
+        else:
+            need(label, z3.And(q >= stop.lo, q <= stop.hi))
+        if positions:
+            need(label, q >= positions[-1] + 1.0)
+        positions.append(q)
+    motion = Motion(route, None, None)
+    if pid in problem.stationary:
+        q = positions[-1] if positions else z3.Real(f"{pid}.start")
+        need(f"{pid}.route", z3.And(q >= 0.0, q <= route.line.length - 1.0))
+        motion.start = q
+        motion.stopped_at_impact = True
+        motion.impact_s = q
+        return motion
+    begin: Any = z3.RealVal(0)
+    if route.starts_at_rest:
+        start = positions.pop(0) if positions and stops[0].index == 0 else z3.RealVal(0.0)
+        if stops and stops[0].index == 0:
+            stops = stops[1:]
+        dwell = z3.Real(f"{pid}.dwell0")
+        need(f"{pid}.route", dwell >= (NICE_DWELL if nice else DWELL))
+        motion.initial_dwell = dwell
+        begin = dwell
+        from_rest = True
+    else:
+        start = z3.Real(f"{pid}.start")
+        need(f"{pid}.route", z3.And(start >= 0.0, start <= route.start_hi))
+        from_rest = False
+    motion.start = start
+    bounds = [start, *positions]
+    vmax, vfact = problem.vmax[pid]
+    for j, leg_start in enumerate(bounds):
+        if final_stop and j == len(bounds) - 1:
+            break  # stopped at the crash: no leg after the last stop
+        end = bounds[j + 1] if j + 1 < len(bounds) else None
+        v, t = z3.Real(f"{pid}.v{j}"), z3.Real(f"{pid}.t{j}")
+        cap = _leg_cap(route, j, stops)
+        low = V_MIN[role]
+        high = min(vmax, cap)
+        need(vfact.label, z3.And(v >= low, v <= vmax))
+        need(f"{pid}.curve{j}", v <= max(cap, low))
+        if nice:
+            pref = min(problem.preferred[pid], high)
+            need(vfact.label, z3.And(v >= max(low, 0.75 * pref), v <= max(low, pref)))
+        leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin)
+        if end is not None:
+            ramps = (v * v / (2 * A_UP) if from_rest else 0) + v * v / (2 * B_DOWN)
+            need(f"{pid}.chain", end - leg_start == v * t - ramps)
+            need(f"{pid}.chain", t >= (v / A_UP if from_rest else 0) + v / B_DOWN)
+            dwell = z3.Real(f"{pid}.dwell{j + 1}")
+            need(f"{pid}.chain", dwell >= (NICE_DWELL if nice else DWELL))
+            motion.dwells.append(dwell)
+            begin = begin + t + dwell
+        motion.legs.append(leg)
+        from_rest = True
+    if final_stop:
+        motion.stopped_at_impact = True
+        motion.impact_s = positions[-1]
+    return motion
+
+
+def _leg_cap(route: Route, j: int, stops: list[Any]) -> float:
+    lo = 0.0 if j == 0 else stops[j - 1].lo
+    hi = stops[j].hi if j < len(stops) else route.line.length
+    return route.cap_between(lo, hi)
+
+
+def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any, nice: bool) -> None:
+    c = problem.contact
+    crash = f"crash.{problem.crash.value}"
+    striker, victim = motions[problem.striker], motions[problem.victim]
+    s = z3.Real("contact")
+    need(crash, z3.And(s >= c.lo, s <= c.hi))
+    s_v = c.offset + c.sign * s if c.sign else z3.RealVal(c.offset)
+    striker.impact_s = s
+    _arrive(problem.striker, striker, s, t_hit, need, nice)
+    if victim.stopped_at_impact:
+        need(crash, victim.impact_s == s_v)
+        if victim.legs:
+            last = victim.legs[-1] if victim.legs[-1].end is not None else victim.legs[-2]
+            need(crash, last.begin + last.t <= t_hit - 0.3)
+    else:
+        victim.impact_s = s_v
+        _arrive(problem.victim, victim, s_v, t_hit, need, nice)
+        if problem.crash is CrashType.REAR_END:
+            need(crash, striker.legs[-1].v >= victim.legs[-1].v + REAR_END_GAIN)
+
+
+def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool) -> None:
+    """The participant is at arc length s at time t_hit, cruising on its last leg."""
+    leg = motion.legs[-1]
+    motion.impact_leg = len(motion.legs) - 1
+    ramp = leg.v * leg.v / (2 * A_UP) if leg.from_rest else 0
+    lead = LEAD if motion.route.participant.role is Role.VEHICLE else 2.0
+    need(f"{pid}.route", s - leg.start >= ramp + (0.0 if leg.from_rest else lead))
+    if nice and not leg.from_rest:
+        need(f"{pid}.route", s - leg.start >= 3.0 * leg.v)
+    need("impact", s - leg.start == leg.v * (t_hit - leg.begin) - ramp)
+    need("impact", t_hit - leg.begin >= (leg.v / A_UP if leg.from_rest else 0))
+    need(f"{pid}.route", s <= motion.route.line.length - 1.0)
+
+
+def _num(value: Any) -> float:
+    if z3.is_rational_value(value):
+        return float(Fraction(value.numerator_as_long(), value.denominator_as_long()))
+    if z3.is_algebraic_value(value):
+        return _num(value.approx(15))
+    raise ValueError(f"not a number: {value}")
+
+
+def _values(model: Any, motions: dict[str, Motion], t_hit: Any, problem: Problem, relaxed: bool) -> Solution:
+    def val(expr: Any) -> float:
+        return _num(model.eval(expr, model_completion=True))
+
+    legs: dict[str, tuple[LegValues, ...]] = {}
+    impact: dict[str, float] = {}
+    dwell0: dict[str, float] = {}
+    starts: dict[str, float] = {}
+    for pid, m in motions.items():
+        starts[pid] = val(m.start)
+        if m.initial_dwell is not None:
+            dwell0[pid] = val(m.initial_dwell)
+        values = []
+        for j, leg in enumerate(m.legs):
+            values.append(
+                LegValues(
+                    start=val(leg.start),
+                    end=None if leg.end is None else val(leg.end),
+                    from_rest=leg.from_rest,
+                    to_rest=leg.to_rest,
+                    v=val(leg.v),
+                    begin=val(leg.begin),
+                    duration=None if leg.end is None else val(leg.t),
+                    dwell=val(m.dwells[j]) if j < len(m.dwells) else 0.0,
+                )
+            )
+        legs[pid] = tuple(values)
+        if m.impact_s is not None:
+            impact[pid] = val(m.impact_s)
+    return Solution(val(t_hit), impact, legs, dwell0, starts, relaxed)

@@ -1,0 +1,153 @@
+"""Drivable paths through a route's waypoints, with OMPL's Dubins state space.
+
+Waypoints (x, y, heading) are taken along the route every WAYPOINT_STEP metres. Between two
+waypoints the path is the shortest Dubins curve (forward driving). Its turning radius is the
+largest of RADII below the route's own radius of curvature there: a Dubins curve turns at
+its radius, so a small radius on a nearly straight road would make tight wiggles.
+Each curve is checked against the route's corridor (the front bumper stays within half a
+lane of the route's line, a SpaceInformation validity checker); a curve that leaves it
+(a turn tighter than the radius) is replaced by the straight chord between its waypoints,
+which the dense waypoints keep close to the route. Pedestrians walk the route's line itself.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from ompl import base as ob
+from sovarc.compiler.lower.polyline import Polyline
+
+WAYPOINT_STEP = 4.0  # m
+RADII = (3.0, 6.0, 12.0, 25.0, 50.0, 100.0, 200.0, 400.0)  # m; 3 m is a tight junction corner
+CORRIDOR = 1.2  # m the path may stray from the route's line
+CHECK_STEP = 0.5  # m between checked states
+EXTENSION = 60.0  # m of straight road added past the route's end, so that nobody runs out of path
+
+
+@dataclass
+class Path:
+    """Position and heading along a path, addressed by the ROUTE's arc length."""
+
+    route_s: np.ndarray  # arc length of each waypoint along the route
+    states: list[tuple[float, float, float]]  # waypoint (x, y, yaw in radians, counter-clockwise from +x)
+    lengths: np.ndarray  # length of the path piece after each waypoint
+    spaces: list[ob.DubinsStateSpace | None]  # each piece's Dubins space (None: a chord)
+
+    def pose(self, s: float) -> tuple[float, float, float, float]:
+        """(x, y, compass heading, path metres per route metre) at route arc length s."""
+        k = int(np.clip(np.searchsorted(self.route_s, s, side="right") - 1, 0, len(self.route_s) - 2))
+        span = self.route_s[k + 1] - self.route_s[k]
+        u = float(np.clip((s - self.route_s[k]) / span, 0.0, 1.0)) if span > 0 else 0.0
+        if s > self.route_s[-1]:  # past the end: straight on
+            x, y, yaw = self.states[-1]
+            extra = s - self.route_s[-1]
+            return x + extra * math.cos(yaw), y + extra * math.sin(yaw), _compass(yaw), 1.0
+        a, b = self.states[k], self.states[k + 1]
+        scale = self.lengths[k] / span if span > 0 else 1.0
+        space = self.spaces[k]
+        if space is not None:
+            x, y, yaw = _interpolate(space, a, b, u)
+            return x, y, _compass(yaw), scale
+        x, y = a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])
+        yaw = math.atan2(b[1] - a[1], b[0] - a[0])
+        return x, y, _compass(yaw), scale
+
+
+def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
+    """The path along `line` (extended straight past its end); also the number of chords used."""
+    end = line.point(line.length)
+    heading = line.heading(line.length)
+    rad = math.radians(heading)
+    extended = Polyline(
+        np.vstack([line.points, [end[0] + EXTENSION * math.sin(rad), end[1] + EXTENSION * math.cos(rad)]])
+    )
+    if vehicle:
+        extended = extended.smoothed()
+    count = max(2, math.ceil(extended.length / WAYPOINT_STEP) + 1)
+    at = np.linspace(0.0, extended.length, count)
+    states = [(*extended.point(s), _yaw(_tangent(extended, s))) for s in at]
+    if not vehicle:
+        return Path(at, states, np.diff(at), [None] * (count - 1)), 0
+    radii = extended.curvature_radius(window=2.0 * WAYPOINT_STEP)
+    local = np.interp(at, extended.s, np.minimum(radii, 1e6))
+    xs, ys = extended.points[:, 0], extended.points[:, 1]
+    box = (float(xs.min()) - 50.0, float(xs.max()) + 50.0, float(ys.min()) - 50.0, float(ys.max()) + 50.0)
+    checker = _Corridor(extended)
+    lengths = np.empty(count - 1)
+    spaces: list[ob.DubinsStateSpace | None] = []
+    chords = 0
+    for k in range(count - 1):
+        tightest = 0.8 * min(local[k], local[k + 1])
+        radius = max((r for r in RADII if r <= tightest), default=RADII[0])
+        space, info = _space(radius, box, checker)
+        a_state, b_state = space.allocState(), space.allocState()
+        _set(a_state, states[k])
+        _set(b_state, states[k + 1])
+        length = space.distance(a_state, b_state)
+        if length <= 1.5 * (at[k + 1] - at[k]) + 0.5 and info.checkMotion(a_state, b_state):
+            spaces.append(space)
+        else:
+            chords += 1
+            length = math.dist(states[k][:2], states[k + 1][:2])
+            spaces.append(None)
+        lengths[k] = length
+    return Path(at, states, lengths, spaces), chords
+
+
+class _Corridor:
+    """OMPL state validity: the front bumper within CORRIDOR metres of the route's line."""
+
+    def __init__(self, line: Polyline) -> None:
+        self.line = line
+
+    def __call__(self, state: ob.State) -> bool:
+        return self.line.project((state.getX(), state.getY()))[1] <= CORRIDOR
+
+
+def _space(
+    radius: float, box: tuple[float, float, float, float], checker: _Corridor
+) -> tuple[ob.DubinsStateSpace, ob.SpaceInformation]:
+    space = ob.DubinsStateSpace(radius)
+    bounds = ob.RealVectorBounds(2)
+    bounds.setLow(0, box[0])
+    bounds.setHigh(0, box[1])
+    bounds.setLow(1, box[2])
+    bounds.setHigh(1, box[3])
+    space.setBounds(bounds)
+    info = ob.SpaceInformation(space)
+    info.setStateValidityChecker(checker)
+    info.setStateValidityCheckingResolution(0.02)
+    info.setup()
+    return space, info
+
+
+def _set(state: ob.State, values: tuple[float, float, float]) -> None:
+    state.setX(values[0])
+    state.setY(values[1])
+    state.setYaw(values[2])
+
+
+def _interpolate(
+    space: ob.DubinsStateSpace, a: tuple[float, float, float], b: tuple[float, float, float], u: float
+) -> tuple[float, float, float]:
+    sa, sb, out = space.allocState(), space.allocState(), space.allocState()
+    _set(sa, a)
+    _set(sb, b)
+    space.interpolate(sa, sb, u, out)
+    return out.getX(), out.getY(), out.getYaw()
+
+
+def _tangent(line: Polyline, s: float) -> float:
+    """Compass heading of the chord over +-1 m: smoother than a single segment's."""
+    a, b = line.point(max(0.0, s - 1.0)), line.point(min(line.length, s + 1.0))
+    return math.degrees(math.atan2(b[0] - a[0], b[1] - a[1])) % 360.0
+
+
+def _yaw(compass: float) -> float:
+    return math.radians(90.0 - compass)
+
+
+def _compass(yaw: float) -> float:
+    return (90.0 - math.degrees(yaw)) % 360.0
