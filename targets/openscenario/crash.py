@@ -109,7 +109,8 @@ def _contact(scene: Scene, crash: Crash, facts: dict[str, object]) -> Iterator[F
         message = f"{a} and {b} first touch at t={first:.2f} s, not at the impact t={crash.time:g} s"
         yield Finding("first_contact", False, message, first)
     elif distance > TOUCH_GAP:
-        message = f"at the impact t={crash.time:g} s {a} and {b} are {distance:.2f} m apart"
+        apart = f"{distance:.2f} m" if distance <= 1.0 else "more than 1 m"
+        message = f"at the impact t={crash.time:g} s {a} and {b} are {apart} apart"
         yield Finding("first_contact", False, message, crash.time)
     else:
         yield Finding("first_contact", True, f"{a} and {b} first touch at t={first:.2f} s", first)

@@ -56,8 +56,21 @@ def _axes(poly: Polygon) -> list[Point]:
     return out
 
 
+def _circle(poly: Polygon) -> tuple[float, float, float]:
+    cx, cy = sum(p[0] for p in poly) / len(poly), sum(p[1] for p in poly) / len(poly)
+    return cx, cy, max(math.hypot(p[0] - cx, p[1] - cy) for p in poly)
+
+
+def _circle_gap(a: Polygon, b: Polygon) -> float:
+    """A lower bound of the distance between two polygons, from their enclosing circles."""
+    (ax, ay, ar), (bx, by, br) = _circle(a), _circle(b)
+    return math.hypot(ax - bx, ay - by) - ar - br
+
+
 def overlap(a: Polygon, b: Polygon) -> bool:
     """Whether two convex polygons share interior points (separating-axis test)."""
+    if _circle_gap(a, b) > 0:
+        return False
     for ax, ay in _axes(a) + _axes(b):
         pa = [x * ax + y * ay for x, y in a]
         pb = [x * ax + y * ay for x, y in b]
@@ -79,9 +92,12 @@ def _edges(poly: Polygon) -> list[tuple[Point, Point]]:
 
 
 def gap(a: Polygon, b: Polygon) -> float:
-    """The distance between two convex polygons; 0 when they overlap or touch."""
+    """The distance between two convex polygons (0 when they overlap or touch); beyond 1 m, a lower bound."""
     if overlap(a, b):
         return 0.0
+    bound = _circle_gap(a, b)
+    if bound > 1.0:  # far apart: the exact distance does not matter, only that it is large
+        return bound
     return min(
         min(_point_segment(p, *e)[0] for p in a for e in _edges(b)),
         min(_point_segment(p, *e)[0] for p in b for e in _edges(a)),
