@@ -155,7 +155,7 @@ def fcd(plan: Plan, spots: dict[str, list[Spot]], network: Network) -> str:
         steps.append(element("timestep", (("time", num(plan.trajectories[0].samples[k].t, digits)),), rows, 4))
     tail = [row for t in ordered if (row := _route_tail(t, spots[t.participant][-1], network))]
     if tail:
-        steps.append(element("timestep", (("time", num(plan.duration + plan.step, digits)),), tail, 4))
+        steps.append(element("timestep", (("time", num(plan.duration + 2 * plan.step, digits)),), tail, 4))
     return root("fcd-export", "fcd_file.xsd", steps, note(plan, "trajectories, replayed by SUMO's fcd-replay device"))
 
 
@@ -219,7 +219,11 @@ def config(plan: Plan, map_name: str, extra: Sequence[tuple[str, str]] = ()) -> 
         section("output", [("collision-output", COLLISIONS)]),
         section(
             "time",
-            [("begin", num(0.0, digits)), ("end", num(plan.duration, digits)), ("step-length", num(plan.step, digits))],
+            [
+                ("begin", num(0.0, digits)),
+                ("end", num(plan.duration + plan.step, digits)),  # the last sample plays in the step before
+                ("step-length", num(plan.step, digits)),
+            ],
         ),
         section("processing", processing),
         section("fcd_replay_device", [("device.fcd-replay.files", FCD)]),

@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Segment, Trajectory
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
+from sovarc.targets.fmu.polyline import Polyline
 
 from tests.conftest import EXAMPLES
 
@@ -82,3 +84,49 @@ def cut_in(duration: float = 10.0) -> Plan:
     ego = eastbound("V1", 30.0, 1, lambda t: 15.0, duration)
     cutter = eastbound("V2", 40.0, 2, lambda t: 9.0, duration, lateral=lambda t: -smooth_step(0.6, 1.4, 3.3)(t))
     return plan_of(ego, cutter, impact_time=1.5)
+
+
+def along(
+    name: str,
+    points: list[tuple[float, float]],
+    start: float,
+    speed: float,
+    duration: float,
+    lanes: tuple[str, ...],
+    edges: tuple[str, ...],
+) -> Trajectory:
+    """A car driving a polyline from arc length `start` at a steady speed."""
+    line = Polyline(points)
+    samples = []
+    for t in np.arange(0.0, duration + 1e-9, STEP):
+        s = start + speed * float(t)
+        x, y = line.point_at(s)
+        samples.append(Sample(round(float(t), 3), x, y, line.heading_at(s), speed))
+    segment = Segment("go_across", start, start + speed * duration, 0.0, duration, speed)
+    return Trajectory(name, Role.VEHICLE, CAR, tuple(samples), lanes, edges, (segment,), None)
+
+
+def crossing(duration: float = 7.0) -> Plan:
+    """At x_oak (priority junction at (400, 0)): V1 eastbound on ave2 lane 2 and V2 southbound on oak
+    both reach the conflict point at t = 5 s: a side crash, V2 striking V1."""
+    east = [
+        (10.4, -8.25),
+        (392.6, -8.25),
+        (397.05, -7.72),
+        (400.0, -6.56),
+        (402.95, -5.4),
+        (407.4, -4.88),
+        (791.84, -4.88),
+    ]
+    south = [(398.3, 389.8), (398.3, -288.5)]
+    v1 = along(
+        "V1", east, 382.6 - 12.0 * 5.0 + 10.0, 12.0, duration, ("ave2_1", ":x_oak_16_1", "ave3_1"), ("ave2", "ave3")
+    )
+    v2 = along("V2", south, 389.8 - (-3.0) - 50.0, 10.0, duration, ("-oak2_0", "-oak1_0"), ("-oak2", "-oak1"))
+    plan = plan_of(v1, v2, striker="V2", victim="V1")
+    return replace(
+        plan,
+        site="junction:x_oak",
+        kind=RoadKind.INTERSECTION,
+        impact=replace(plan.impact, point=(398.3, -4.9), type=CrashType.SIDE),
+    )

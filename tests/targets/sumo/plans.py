@@ -216,7 +216,50 @@ def head_on() -> Plan:
     return make_plan("straight_double_yellow_pass_frontal", site, RoadKind.STRAIGHT, v1, v2, point=meet)
 
 
-SCENES: dict[str, Callable[[], Plan]] = {"t_bone": t_bone, "rear_end": rear_end, "head_on": head_on}
+def line(point: Point, heading: float, back: float = 200.0, ahead: float = 100.0) -> list[Point]:
+    """A straight path through `point` in compass `heading`."""
+    r = math.radians(heading)
+    dx, dy = math.sin(r), math.cos(r)
+    return [(point[0] - back * dx, point[1] - back * dy), (point[0] + ahead * dx, point[1] + ahead * dy)]
+
+
+def sideswipe() -> Plan:
+    """ave2: V2 drifts left from lane 2 into lane 3 and its front strikes the right side of V1 there."""
+    v1 = drive("V1", Role.VEHICLE, ("ave2_2",), 14.0, s_of(shape_of(("ave2_2",)), (152.3, -4.95)))
+    contact = (150.0, -4.95 - CAR.width / 2)
+    r = math.radians(80.0)
+    drift = (-8.25 - contact[1]) * math.sin(r) / math.cos(r)  # where the 80-degree line leaves lane 2
+    path = [(10.4, -8.25), (contact[0] + drift, -8.25), *line(contact, 80.0, back=0.0)]
+    v2 = drive("V2", Role.VEHICLE, ("ave2_1",), 12.0, s_of(path, contact), shape=path, allowed=("ave2_1", "ave2_2"))
+    site = "road:-ave2|ave2"
+    return make_plan("straight_driveway_left_drive_off_side", site, RoadKind.STRAIGHT, v1, v2, point=contact)
+
+
+def pedestrian() -> Plan:
+    """main1, mid-block: P1 walks west across; northbound V1 in lane 2 strikes P1's left side."""
+    centre = (1.5, -150.0)
+    p1 = drive(
+        "P1",
+        Role.PEDESTRIAN,
+        ("main1_0", "-main1_0"),
+        1.5,
+        20.0,
+        body=PEDESTRIAN,
+        shape=line(centre, 270.0, back=20.0, ahead=20.0),
+        allowed=("main1_0", "main1_1", "main1_2", "-main1_2", "-main1_1", "-main1_0"),
+    )
+    v1 = drive("V1", Role.VEHICLE, ("main1_2",), 10.5, 150.0 - 6.0 - PEDESTRIAN.width / 2)
+    site = "road:-main1|main1"
+    return make_plan("straight_midblock_pedestrian_cross_side", site, RoadKind.STRAIGHT, v1, p1, point=centre)
+
+
+SCENES: dict[str, Callable[[], Plan]] = {
+    "t_bone": t_bone,
+    "rear_end": rear_end,
+    "head_on": head_on,
+    "sideswipe": sideswipe,
+    "pedestrian": pedestrian,
+}
 
 
 def with_trajectory(plan: Plan, trajectory: Trajectory) -> Plan:

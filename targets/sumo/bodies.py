@@ -1,0 +1,164 @@
+"""Participants' bodies as rectangles, and where two of them first touch.
+
+A vehicle's reference point is its front-bumper centre, a pedestrian's its body centre
+(the plan's convention, and SUMO's for vehicles). Headings are compass degrees.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+
+Point = tuple[float, float]
+FACES = ("front", "rear", "left", "right")
+
+
+@dataclass(frozen=True)
+class Body:
+    x: float
+    y: float
+    heading: float  # compass degrees
+    length: float
+    width: float
+    front_ref: bool  # True: (x, y) is the front-bumper centre; False: the body centre
+
+    @property
+    def axes(self) -> tuple[Point, Point]:
+        """Unit vectors forward and to the left."""
+        r = math.radians(self.heading)
+        return (math.sin(r), math.cos(r)), (-math.cos(r), math.sin(r))
+
+    @property
+    def centre(self) -> Point:
+        if not self.front_ref:
+            return (self.x, self.y)
+        (fx, fy), _ = self.axes
+        return (self.x - fx * self.length / 2.0, self.y - fy * self.length / 2.0)
+
+    def corners(self, shrink: float = 0.0) -> list[Point]:
+        """Front-left, rear-left, rear-right, front-right (counter-clockwise), each face moved in by `shrink`."""
+        (fx, fy), (lx, ly) = self.axes
+        cx, cy = self.centre
+        hl, hw = max(self.length / 2.0 - shrink, 0.0), max(self.width / 2.0 - shrink, 0.0)
+        return [
+            (cx + a * hl * fx + b * hw * lx, cy + a * hl * fy + b * hw * ly)
+            for a, b in ((1, 1), (-1, 1), (-1, -1), (1, -1))
+        ]
+
+    def faces_at(self, point: Point, primary: str) -> tuple[str, ...]:
+        """`primary` and any other face the point is close to: a point near a corner (within a
+        quarter of the length of the front or rear, a quarter of the width of a side) is on both."""
+        (fx, fy), (lx, ly) = self.axes
+        cx, cy = self.centre
+        along = (point[0] - cx) * fx + (point[1] - cy) * fy
+        left = (point[0] - cx) * lx + (point[1] - cy) * ly
+        near = {
+            "front": along >= self.length / 4.0,
+            "rear": along <= -self.length / 4.0,
+            "left": left >= self.width / 4.0,
+            "right": left <= -self.width / 4.0,
+        }
+        return tuple(face for face in FACES if face == primary or (near[face] and _corner(primary, face)))
+
+    def face_towards(self, direction: Point) -> str:
+        """The face whose outward normal points most along `direction`."""
+        (fx, fy), (lx, ly) = self.axes
+        along = direction[0] * fx + direction[1] * fy
+        left = direction[0] * lx + direction[1] * ly
+        scores = {"front": along, "rear": -along, "left": left, "right": -left}
+        return max(FACES, key=lambda face: scores[face])
+
+
+def _corner(primary: str, face: str) -> bool:
+    """Whether two faces meet at a corner (front/rear with left/right)."""
+    return {primary, face} in ({"front", "left"}, {"front", "right"}, {"rear", "left"}, {"rear", "right"})
+
+
+def overlap(a: Body, b: Body) -> bool:
+    """Whether the two rectangles share area (separating axis test)."""
+    pa, pb = a.corners(), b.corners()
+    for body in (a, b):
+        for axis in body.axes:
+            ra = [p[0] * axis[0] + p[1] * axis[1] for p in pa]
+            rb = [p[0] * axis[0] + p[1] * axis[1] for p in pb]
+            if max(ra) <= min(rb) or max(rb) <= min(ra):
+                return False
+    return True
+
+
+def _closest_on_segment(p: Point, a: Point, b: Point) -> Point:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    span = dx * dx + dy * dy
+    u = 0.0 if span == 0.0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / span))
+    return (a[0] + u * dx, a[1] + u * dy)
+
+
+def closest_points(a: Body, b: Body) -> tuple[Point, Point]:
+    """The nearest pair of points of two separate rectangles' outlines (on a, on b)."""
+    return _near_pairs(a, b)[0]
+
+
+def _near_pairs(a: Body, b: Body, slack: float = 1e-3) -> list[tuple[Point, Point]]:
+    """Pairs of outline points (on a, on b) within `slack` of the smallest distance, nearest first:
+    two faces that meet flat give a pair at each end of the contact, a corner gives one."""
+    pa, pb = a.corners(), b.corners()
+    pairs: list[tuple[float, Point, Point]] = []
+    for poly_p, poly_q, swap in ((pa, pb, False), (pb, pa, True)):
+        for p in poly_p:
+            for q0, q1 in itertools.pairwise([*poly_q, poly_q[0]]):
+                q = _closest_on_segment(p, q0, q1)
+                pairs.append((math.dist(p, q), q, p) if swap else (math.dist(p, q), p, q))
+    pairs.sort(key=lambda item: item[0])
+    least = pairs[0][0]
+    return [(p, q) for d, p, q in pairs if d <= least + slack]
+
+
+def between(a: Body, b: Body, u: float) -> Body:
+    """The body a fraction u of the way from pose a to pose b."""
+    turn = ((b.heading - a.heading + 180.0) % 360.0) - 180.0
+    return Body(
+        a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.heading + u * turn) % 360.0, a.length, a.width, a.front_ref
+    )
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Two bodies' first touch: when, where, and which face of each meets the other."""
+
+    time: float
+    point: Point
+    faces: tuple[str, str]  # of the first body, of the second: the face the contact pushes on
+    zones: tuple[tuple[str, ...], tuple[str, ...]]  # each body's faces at the contact point (two at a corner)
+    angle: float  # degrees between their headings, 0..180
+
+
+def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]) -> Contact:
+    """The contact of bodies a and b between time t0 (apart) and t1 (overlapping), with the
+    poses at both times; found by bisection on straight-line motion between them."""
+    lo, hi = 0.0, 1.0
+    if overlap(a[0], b[0]):  # already touching at t0: nothing to bisect
+        hi = 0.0
+    else:
+        for _ in range(30):
+            mid = (lo + hi) / 2.0
+            if overlap(between(*a, mid), between(*b, mid)):
+                hi = mid
+            else:
+                lo = mid
+    body_a, body_b = between(*a, lo), between(*b, lo)
+    if hi == 0.0:
+        near = [(body_a.centre, body_b.centre)]
+    else:
+        near = _near_pairs(body_a, body_b)
+    pa, pb = near[0]
+    direction = (pb[0] - pa[0], pb[1] - pa[1])
+    if math.hypot(*direction) < 1e-9:  # touching at a point: take the centres' direction
+        (ax, ay), (bx, by) = body_a.centre, body_b.centre
+        direction = (bx - ax, by - ay)
+    faces = (body_a.face_towards(direction), body_b.face_towards((-direction[0], -direction[1])))
+    angle = abs(((body_a.heading - body_b.heading + 180.0) % 360.0) - 180.0)
+    points = [((p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0) for p, q in near]
+    point = (sum(p[0] for p in points) / len(points), sum(p[1] for p in points) / len(points))
+    zones = (body_a.faces_at(point, faces[0]), body_b.faces_at(point, faces[1]))
+    return Contact(t0 + lo * (t1 - t0), point, faces, zones, angle)

@@ -1,0 +1,249 @@
+"""The SUMO oracle's judgement (the paper's SIM function): a replay trace in, a Verdict out.
+
+Checks, in order:
+- `replay`: every participant is in the simulation at every step, on its recorded position.
+- `collision`: some participants collide. SUMO's own detection (`getCollisions`) comes first;
+  where it is blind (see below) the bodies, as SUMO placed them, overlapping counts too, and
+  the verdict says which of the two saw it.
+- `pair`: the first collision is between the report's striker and victim.
+- `impact_angle`: at the first touch, the faces and the angle between headings match the
+  crash type: rear_end = striker front into victim rear, headings within 45 degrees;
+  frontal = front into front, headings at least 135 degrees apart; side = striker front into
+  a side of the victim.
+- `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
+  its actions do not allow. Junction interiors have no painted lines and are not checked;
+  sidewalks are always allowed to pedestrians.
+
+SUMO's collision detection sees vehicles that overlap along one lane (including a wrong-way
+driver on the lane: head-on), and, with `--collision.check-junctions`, vehicle shapes that
+overlap on a junction. It does not see a vehicle striking a pedestrian who is not on a lane
+or crossing the vehicle uses (a mid-block crossing), nor bodies that overlap across a lane
+line while each one's front is still on its own lane; those are found from the bodies.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from sovarc.compiler.plan import Plan, Trajectory
+from sovarc.dsl.ir import CrashType
+from sovarc.targets.sumo.bodies import Body, Contact, closest_points, first_touch, overlap
+from sovarc.targets.sumo.network import Network
+from sovarc.targets.sumo.replay import Pose, Trace
+from sovarc.targets.verdict import Finding, Verdict
+
+TARGET = "sumo"
+LINE_TOLERANCE = 0.25  # m a body may reach over a lane line before it counts as crossing it
+TRACK_TOLERANCE = 0.10  # m between a replayed position and its sample
+REAR_END_MAX_ANGLE = 45.0
+FRONTAL_MIN_ANGLE = 135.0
+VICTIM_FACES = {CrashType.REAR_END: ("rear",), CrashType.FRONTAL: ("front",), CrashType.SIDE: ("left", "right")}
+
+
+@dataclass(frozen=True)
+class Crash:
+    pair: tuple[str, str]  # sorted
+    time: float  # s, the first step either SUMO or the bodies saw it
+    detected_by: str  # 'sumo' or 'bodies'
+    sumo_kind: str | None
+
+
+def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
+    crashes = _crashes(plan, trace)
+    striker, victim = plan.impact.striker, plan.impact.victim
+    pair = tuple(sorted((striker, victim)))
+    hit = next((c for c in crashes if c.pair == pair), None)
+    contact = _contact(plan, trace, hit) if hit else None
+    until = contact.time if contact else trace.times[-1]
+    findings = [
+        _replay_finding(plan, trace),
+        _collision_finding(plan, trace, crashes),
+        _pair_finding(crashes, striker, victim),
+        _angle_finding(plan, contact),
+        _lanes_finding(plan, trace, network, until),
+    ]
+    facts = {
+        "sumo": trace.sumo,
+        "collisions": [
+            {"pair": list(c.pair), "time": _t(c.time), "detected_by": c.detected_by, "sumo_type": c.sumo_kind}
+            for c in crashes
+        ],
+        "planned_impact_time": _t(plan.impact.time),
+    }
+    if contact:
+        facts["impact"] = {
+            "time": _t(contact.time),
+            "point": [round(v, 3) for v in contact.point],
+            "striker_face": "-".join(contact.zones[0]),
+            "victim_face": "-".join(contact.zones[1]),
+            "angle": round(contact.angle, 1),
+        }
+    return Verdict(TARGET, plan.scenario.name, plan.site, tuple(findings), facts)
+
+
+def _t(value: float) -> float:
+    return round(value, 3)
+
+
+def body_of(t: Trajectory, pose: Pose) -> Body:
+    return Body(pose.x, pose.y, pose.angle, t.body.length, t.body.width, t.body.vclass != "pedestrian")
+
+
+def _crashes(plan: Plan, trace: Trace) -> list[Crash]:
+    sumo = {tuple(sorted((c.collider, c.victim))): c for c in trace.collisions}
+    found: list[Crash] = []
+    for a, b in itertools.combinations(sorted(t.participant for t in plan.trajectories), 2):
+        key = (a, b)
+        step = _first_overlap(plan, trace, a, b)
+        reported = sumo.get(key)
+        if reported is not None:
+            found.append(Crash(key, reported.first, "sumo", reported.kind))
+        elif step is not None:
+            found.append(Crash(key, trace.times[step], "bodies", None))
+    return sorted(found, key=lambda c: (c.time, c.pair))
+
+
+def _first_overlap(plan: Plan, trace: Trace, a: str, b: str) -> int | None:
+    ta, tb = plan.trajectory(a), plan.trajectory(b)
+    for k, (pa, pb) in enumerate(zip(trace.poses[a], trace.poses[b], strict=True)):
+        if pa is not None and pb is not None and overlap(body_of(ta, pa), body_of(tb, pb)):
+            return k
+    return None
+
+
+def _contact(plan: Plan, trace: Trace, crash: Crash) -> Contact:
+    """The striker's and victim's first touch, from the poses SUMO had them in."""
+    s, v = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
+    k = _first_overlap(plan, trace, s.participant, v.participant)
+    if k is None:  # SUMO saw it, the rectangles never overlap: judge the step SUMO reported
+        k = min(range(len(trace.times)), key=lambda i: abs(trace.times[i] - crash.time))
+    j = max(k - 1, 0)
+    ps, pv = trace.poses[s.participant], trace.poses[v.participant]
+    if any(p is None for p in (ps[j], ps[k], pv[j], pv[k])):
+        j = k
+    pose = {name: p for name, p in (("s0", ps[j]), ("s1", ps[k]), ("v0", pv[j]), ("v1", pv[k]))}
+    assert all(p is not None for p in pose.values())
+    bodies = {name: body_of(s if name[0] == "s" else v, p) for name, p in pose.items() if p is not None}
+    return first_touch(trace.times[j], trace.times[k], (bodies["s0"], bodies["s1"]), (bodies["v0"], bodies["v1"]))
+
+
+# --- findings ---------------------------------------------------------------------------
+
+
+def _replay_finding(plan: Plan, trace: Trace) -> Finding:
+    worst = (0.0, "", 0.0)
+    for t in plan.trajectories:
+        for k, pose in enumerate(trace.poses[t.participant]):
+            time = trace.times[k]
+            if pose is None:
+                return Finding(
+                    "replay", False, f"{t.participant} is not in the SUMO simulation at t={time:.2f} s", time
+                )
+            sample = t.at(time)
+            error = math.dist((pose.x, pose.y), (sample.x, sample.y))
+            if error > worst[0]:
+                worst = (error, t.participant, time)
+    error, who, time = worst
+    if error > TRACK_TOLERANCE:
+        return Finding("replay", False, f"SUMO placed {who} {error:.2f} m from its trajectory at t={time:.2f} s", time)
+    return Finding("replay", True, "every participant follows its trajectory in SUMO at every step")
+
+
+def _collision_finding(plan: Plan, trace: Trace, crashes: Sequence[Crash]) -> Finding:
+    if crashes:
+        c = crashes[0]
+        a, b = c.pair
+        if c.detected_by == "sumo":
+            return Finding("collision", True, f"SUMO reports {a} and {b} colliding ({c.sumo_kind})", c.time)
+        message = f"the bodies of {a} and {b} overlap in SUMO (a collision SUMO's own check does not report)"
+        return Finding("collision", True, message, c.time)
+    gap, time = _closest_approach(plan, trace)
+    striker, victim = plan.impact.striker, plan.impact.victim
+    message = f"no collision: {striker} and {victim} come no closer than {gap:.2f} m (at t={time:.2f} s)"
+    return Finding("collision", False, message, time)
+
+
+def _closest_approach(plan: Plan, trace: Trace) -> tuple[float, float]:
+    s, v = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
+    best = (math.inf, 0.0)
+    for k, (ps, pv) in enumerate(zip(trace.poses[s.participant], trace.poses[v.participant], strict=True)):
+        if ps is not None and pv is not None:
+            a, b = closest_points(body_of(s, ps), body_of(v, pv))
+            best = min(best, (math.dist(a, b), trace.times[k]))
+    return best
+
+
+def _pair_finding(crashes: Sequence[Crash], striker: str, victim: str) -> Finding:
+    wanted = tuple(sorted((striker, victim)))
+    if not crashes:
+        return Finding("pair", False, f"{striker} and {victim} do not collide")
+    first = crashes[0]
+    if first.pair == wanted:
+        return Finding(
+            "pair", True, f"the first collision is between striker {striker} and victim {victim}", first.time
+        )
+    a, b = first.pair
+    if any(c.pair == wanted for c in crashes):
+        message = f"{a} and {b} collide first, before striker {striker} and victim {victim}"
+    else:
+        message = f"{a} and {b} collide; striker {striker} and victim {victim} never do"
+    return Finding("pair", False, message, first.time)
+
+
+def _angle_finding(plan: Plan, contact: Contact | None) -> Finding:
+    kind = plan.impact.type
+    if contact is None:
+        return Finding("impact_angle", False, f"no {kind.value} impact: the striker and victim do not collide")
+    striker, victim = plan.impact.striker, plan.impact.victim
+    s_zone, v_zone = contact.zones
+    seen = f"{striker}'s {_face_words(s_zone)} meets {victim}'s {_face_words(v_zone)} at {contact.angle:.0f} degrees"
+    wanted = " or ".join(_face_words((face,)) for face in VICTIM_FACES[kind])
+    expected = f"{kind.value} needs {striker}'s front into {victim}'s {wanted}"
+    ok = "front" in s_zone and any(face in v_zone for face in VICTIM_FACES[kind])
+    if kind is CrashType.REAR_END:
+        ok = ok and contact.angle <= REAR_END_MAX_ANGLE
+        expected += f", headings within {REAR_END_MAX_ANGLE:.0f} degrees"
+    elif kind is CrashType.FRONTAL:
+        ok = ok and contact.angle >= FRONTAL_MIN_ANGLE
+        expected += f", headings at least {FRONTAL_MIN_ANGLE:.0f} degrees apart"
+    message = f"{seen} ({kind.value})" if ok else f"{seen}; {expected}"
+    return Finding("impact_angle", ok, message, _t(contact.time))
+
+
+def _face_words(zone: tuple[str, ...]) -> str:
+    """('front',) -> 'front'; ('left',) -> 'left side'; ('front', 'left') -> 'front-left corner'."""
+    if len(zone) == 2:
+        return f"{zone[0]}-{zone[1]} corner"
+    return f"{zone[0]} side" if zone[0] in {"left", "right"} else zone[0]
+
+
+def _lanes_finding(plan: Plan, trace: Trace, network: Network, until: float) -> Finding:
+    for k, time in enumerate(trace.times):
+        if time >= until - 1e-9:
+            break
+        for t in plan.trajectories:
+            pose = trace.poses[t.participant][k]
+            if pose is None or not t.lanes:
+                continue
+            crossed = lane_violation(network, t, pose)
+            if crossed is not None:
+                message = f"{t.participant} enters lane {crossed}, which its actions do not allow"
+                return Finding("lane_lines", False, message, time)
+    return Finding("lane_lines", True, "every participant keeps to the lanes its actions allow until the impact")
+
+
+def lane_violation(network: Network, t: Trajectory, pose: Pose) -> str | None:
+    """A lane the body reaches into (beyond the tolerance) that the participant may not use."""
+    allowed = set(t.lanes)
+    pedestrian = t.body.vclass == "pedestrian"
+    if not pedestrian and pose.lane and not pose.lane.startswith(":") and pose.lane not in allowed:
+        return pose.lane
+    for x, y in body_of(t, pose).corners(shrink=LINE_TOLERANCE):
+        here = [lane for lane in network.near(x, y, 1.0) if network.spot(lane, x, y)[1] <= lane.width / 2.0]
+        roads = [lane for lane in here if not lane.internal and not (pedestrian and lane.pedestrian_only)]
+        if roads and not any(lane.id in allowed for lane in here):
+            return roads[0].id
+    return None
