@@ -1,0 +1,86 @@
+"""The esmini harness. esmini itself cannot be installed here (not on PyPI or in Debian), so
+`play` runs against a stand-in script that speaks esmini's command line and log format."""
+
+from __future__ import annotations
+
+import stat
+from pathlib import Path
+
+import pytest
+from sovarc.targets.openscenario.player import (
+    Collision,
+    PlayerError,
+    esmini_command,
+    esmini_path,
+    judge_collisions,
+    parse_collisions,
+    play,
+)
+
+from tests.targets.openscenario.conftest import Emitter
+
+LOG = """\
+0.000: Init V1 TeleportAction initState -> startTransition -> runningState
+[2.500] [info] Collision between V3 and V4
+4.010: Collision between V1 and V2
+4.600: Collision between V1 and V2 dissolved
+"""
+
+
+def test_collisions_are_read_from_both_log_formats() -> None:
+    assert parse_collisions(LOG) == [Collision(2.5, "V3", "V4"), Collision(4.01, "V1", "V2")]
+
+
+def test_the_right_pair_near_the_planned_time_passes() -> None:
+    findings = judge_collisions([Collision(4.01, "V2", "V1")], "V1", "V2", 4.0)
+    assert all(f.passed for f in findings)
+    assert findings[0].message == "esmini saw V1 and V2 collide at t=4.01 s (planned 4 s)"
+
+
+def test_a_late_crash_or_an_earlier_other_collision_fails() -> None:
+    late, other = judge_collisions(parse_collisions(LOG), "V1", "V2", 3.0)
+    assert not late.passed and late.message == "esmini saw V1 and V2 collide at t=4.01 s, planned at 3 s"
+    assert not other.passed and other.message == "esmini saw V3 and V4 collide at t=2.5 s, before the crash"
+    (missing, _) = judge_collisions([], "V1", "V2", 3.0)
+    assert missing.message == "esmini saw no collision between V1 and V2"
+
+
+def test_the_command_runs_headless_with_collision_detection(tmp_path: Path) -> None:
+    command = esmini_command("/opt/esmini/bin/esmini", tmp_path / "scenario.xosc", tmp_path / "log.txt")
+    assert command[:4] == ["/opt/esmini/bin/esmini", "--headless", "--osc", str(tmp_path / "scenario.xosc")]
+    assert {"--collision", "--disable_stdout"} <= set(command)
+    assert command[command.index("--fixed_timestep") + 1] == "0.01"
+
+
+def test_a_missing_player_is_a_clear_error(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.delenv("ESMINI", raising=False)
+    monkeypatch.setenv("PATH", str(tmp_path))
+    with pytest.raises(PlayerError, match=r"esmini not found: set \$ESMINI to the esmini binary or put it on PATH"):
+        esmini_path()
+
+
+def _stand_in(tmp_path: Path, log: str) -> str:
+    """A script that accepts esmini's arguments and writes `log` where --logfile_path says."""
+    script = tmp_path / "esmini"
+    script.write_text(
+        "#!/bin/sh\n"
+        'while [ "$#" -gt 0 ]; do\n'
+        '  if [ "$1" = "--logfile_path" ]; then shift; out="$1"; fi\n'
+        "  shift\n"
+        "done\n"
+        f"cat > \"$out\" <<'EOF'\n{log}EOF\n",
+        encoding="utf-8",
+    )
+    script.chmod(script.stat().st_mode | stat.S_IEXEC)
+    return str(script)
+
+
+@pytest.mark.slow  # emits (needs SUMO for the road network)
+def test_play_runs_the_player_and_judges_its_log(emitted: Emitter, tmp_path: Path) -> None:
+    plan, files = emitted("t_bone")
+    verdict = play(files.xosc, plan, esmini=_stand_in(tmp_path, "4.020: Collision between V1 and V2\n"))
+    assert verdict.passed, verdict.dumps()
+    assert verdict.target == "openscenario:esmini"
+    assert verdict.facts == {"collisions": [[4.02, "V1", "V2"]]}
+    missed = play(files.xosc, plan, esmini=_stand_in(tmp_path, "0.000: nothing happened\n"))
+    assert [f.check for f in missed.failures] == ["player_collision"]
