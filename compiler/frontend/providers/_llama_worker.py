@@ -9,15 +9,25 @@ Protocol, one JSON object per line: the config arrives on stdin; the child
 answers {"ready": load_seconds} or {"error": message} on the protocol pipe
 (the original stdout), then one {"ok": response} or {"error": message} per
 request line. EOF on stdin ends it.
+
+Prompt prefix states: a request may carry `_prefix_file`, a file name in the
+config's `slot_dir`. The first time a process sees it, a saved state is
+restored into the slot (llama.cpp then reuses the common prefix, the long
+system prompt, instead of processing it again); after the answer, the state
+is saved if no file exists yet. Both go through the server's own loopback
+`/slots` endpoint, and a failure there only costs time.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import secrets
 import sys
 import time
+import urllib.error
+import urllib.request
 from typing import IO, Any
 
 
@@ -42,9 +52,37 @@ def _load(config: dict[str, Any]) -> Any:
     params.cpuparams_batch.n_threads = config["threads"]
     params.sampling.temp = 0.0
     params.sampling.seed = config["seed"]
-    # The server also listens on a loopback port; a random key keeps other local processes out.
-    params.api_keys = [secrets.token_hex(16)]
+    params.api_keys = [config["api_key"]]
+    if config.get("slot_dir"):
+        params.slot_save_path = config["slot_dir"].rstrip("/") + "/"
+        params.endpoint_slots = True
     return xllamacpp.Server(params)
+
+
+def _slot_action(server: Any, key: str, action: str, filename: str) -> None:
+    request = urllib.request.Request(
+        f"{server.listening_address}/slots/0?action={action}",
+        data=json.dumps({"filename": filename}).encode(),
+        headers={"Authorization": f"Bearer {key}", "Content-Type": "application/json"},
+    )
+    with contextlib.suppress(OSError, urllib.error.URLError):
+        urllib.request.urlopen(request, timeout=60).read()
+
+
+def _answer(server: Any, config: dict[str, Any], request: dict[str, Any], seen: set[str]) -> dict[str, Any]:
+    prefix = request.pop("_prefix_file", None)
+    slot_dir = config.get("slot_dir")
+    if not (prefix and slot_dir):
+        return server.handle_chat_completions(request)
+    saved = os.path.exists(os.path.join(slot_dir, prefix))
+    if saved and prefix not in seen:
+        _slot_action(server, config["api_key"], "restore", prefix)
+    response = server.handle_chat_completions(request)
+    if not saved:
+        os.makedirs(slot_dir, exist_ok=True)
+        _slot_action(server, config["api_key"], "save", prefix)
+    seen.add(prefix)
+    return response
 
 
 def _send(channel: IO[str], message: dict[str, Any]) -> None:
@@ -54,6 +92,7 @@ def _send(channel: IO[str], message: dict[str, Any]) -> None:
 
 def main() -> None:
     config = json.loads(sys.stdin.readline())
+    config["api_key"] = secrets.token_hex(16)  # the server also listens on a loopback port: keep others out
     channel = _private_channel(config["log_file"])
     started = time.perf_counter()
     try:
@@ -65,9 +104,10 @@ def main() -> None:
         _send(channel, {"error": f"{type(exc).__name__}: {exc}"})
         return
     _send(channel, {"ready": time.perf_counter() - started})
+    seen: set[str] = set()
     for line in sys.stdin:
         try:
-            _send(channel, {"ok": server.handle_chat_completions(json.loads(line))})
+            _send(channel, {"ok": _answer(server, config, json.loads(line), seen)})
         except Exception as exc:
             _send(channel, {"error": f"{type(exc).__name__}: {exc}"})
 

@@ -10,6 +10,7 @@ entirely from the answer cache never loads the model.
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import json
 import os
 import select
@@ -42,10 +43,11 @@ class EmbeddedProvider:
         model_path: Path | None = None,
         *,
         threads: int = 2,
-        ctx: int = 4096,
+        ctx: int = 8192,
         seed: int = DEFAULT_SEED,
-        timeout_s: float = 120.0,
+        timeout_s: float = 300.0,
         log_file: Path | None = None,
+        prefix_dir: Path | None = None,
     ) -> None:
         # A user-given GGUF (`--model`) is used as is; only the bundled model is hash-checked.
         self._user_model = Path(model_path) if model_path is not None else None
@@ -59,6 +61,7 @@ class EmbeddedProvider:
         self.seed = seed
         self.timeout_s = timeout_s
         self.log_file = log_file or default_log_file()
+        self.prefix_dir = prefix_dir or default_log_file().parent / "prefixes"
         self.load_seconds: float | None = None
         self.last_response: dict[str, Any] | None = None  # usage and timings of the last answer, for benchmarks
         self._process: subprocess.Popen[bytes] | None = None
@@ -72,6 +75,7 @@ class EmbeddedProvider:
             "temperature": 0.0,
             "seed": self.seed,
             "response_format": {"type": "json_schema", "json_schema": {"name": "answer", "schema": schema}},
+            "_prefix_file": self._prefix_file(system),
         }
         response = self._call(request)
         self.last_response = response
@@ -85,7 +89,7 @@ class EmbeddedProvider:
         model_path = self._user_model or ensure_model_file()
         self.log_file.parent.mkdir(parents=True, exist_ok=True)
         config = {"model_path": str(model_path), "log_file": str(self.log_file)}
-        config |= {"threads": self.threads, "ctx": self.ctx, "seed": self.seed}
+        config |= {"threads": self.threads, "ctx": self.ctx, "seed": self.seed, "slot_dir": str(self.prefix_dir)}
         with self.log_file.open("ab") as log:  # the child's stderr before it redirects, e.g. an import error
             self._process = subprocess.Popen(
                 [sys.executable, "-m", WORKER_MODULE], stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log
@@ -124,6 +128,11 @@ class EmbeddedProvider:
             self.close()
 
     # --- internals -----------------------------------------------------------------------------
+    def _prefix_file(self, system: str) -> str:
+        """The saved-state file of this model and system prompt: later processes skip processing it again."""
+        material = json.dumps([self.model, self.ctx, system]).encode("utf-8")
+        return f"{hashlib.sha256(material).hexdigest()[:32]}.bin"
+
     def _call(self, request: dict[str, Any]) -> dict[str, Any]:
         self.load()
         reply = self._exchange(request, self.timeout_s, "answering")

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 from sovarc.compiler.frontend import FrontEndError, extract_report, scenario_name
+from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.rules import (
     extract,
     extract_environment,
@@ -96,35 +97,40 @@ def test_extraction_is_deterministic() -> None:
     assert to_text(extract(text, "a")) == to_text(extract(text, "a"))
 
 
-def test_unbuilt_front_ends_say_so() -> None:
-    with pytest.raises(FrontEndError, match="not built yet"):
-        extract_report(Source("r.txt", "V1 hit V2."), "openai:gpt-4o")
+def test_front_ends_without_what_they_need_say_so(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("OPENAI_API_KEY", raising=False)
+    monkeypatch.delenv("OPENAI_BASE_URL", raising=False)
+    with pytest.raises(ProviderError, match="needs an API key: set OPENAI_API_KEY"):
+        extract_report(Source("r.txt", "V1 was northbound on the road and the front of V1 hit V2."), "openai:gpt-4o")
+    with pytest.raises(FrontEndError, match="names no vehicle"):
+        extract_report(Source("r.txt", "It rained on the road all day and the river rose."), "none")
     assert scenario_name("reports/3.txt") == "report_3"
     assert scenario_name("my report.txt") == "my_report"
 
 
 def test_extract_command_writes_one_file_per_report(tmp_path: Path) -> None:
-    result = sovarc("extract", *map(str, REPORTS), "-o", str(tmp_path))
+    result = sovarc("extract", *map(str, REPORTS), "-o", str(tmp_path), "--llm", "none")
     assert result.returncode == 0, result.stderr
     assert sorted(p.stem for p in tmp_path.glob("*.sov")) == sorted(p.stem for p in REPORTS)
     assert sovarc("check", *map(str, tmp_path.glob("*.sov"))).returncode == 0
     assert sovarc("extract", *map(str, REPORTS)).returncode == 2
-    one = sovarc("extract", str(REPORTS[0]))
+    one = sovarc("extract", str(REPORTS[0]), "--llm", "none")
     assert one.stdout.startswith(f"scenario {REPORTS[0].stem} {{")
     empty = tmp_path / "empty.txt"
     empty.write_text("")
-    bad = sovarc("extract", str(empty), "-o", str(tmp_path / "o"))
+    bad = sovarc("extract", str(empty), "-o", str(tmp_path / "o"), "--llm", "none")
     assert bad.returncode == 1 and "empty.txt: error: is empty" in bad.stderr
 
 
 def test_main_job_reads_a_report(tmp_path: Path) -> None:
-    result = sovarc(str(REPORTS[0]))
+    result = sovarc(str(REPORTS[0]), "--llm", "none")
     assert result.returncode == 0 and "frontend rules" in result.stdout
 
 
 def test_eval_extraction_on_the_shared_reports() -> None:
     data = SHARED / "data" / "nmvccs"
-    result = sovarc("eval", "extraction", "--reports", str(data / "reports"), "--truth", str(data / "truth"), "--json")
+    where = ("--reports", str(data / "reports"), "--truth", str(data / "truth"), "--llm", "none")
+    result = sovarc("eval", "extraction", *where, "--json")
     assert result.returncode == 0, result.stderr
     figures = json.loads(result.stdout)
     assert figures["cases"] == 90
@@ -133,5 +139,5 @@ def test_eval_extraction_on_the_shared_reports() -> None:
     assert figures["accuracy"]["CollisionLocation"] >= 95
     assert figures["accuracy"]["ParticipantsNumber"] >= 95
     assert figures["accuracy"]["SpeedLimit"] >= 85
-    table = sovarc("eval", "extraction", "--reports", str(data / "reports"), "--truth", str(data / "truth"))
+    table = sovarc("eval", "extraction", *where)
     assert "SoVAR GPT-4" in table.stdout and "failing fields" in table.stdout

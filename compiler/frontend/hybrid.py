@@ -1,0 +1,181 @@
+"""Hybrid extraction: rules read what text patterns state exactly, the model reads the dynamic layer.
+
+1. The rules read the whole report (`rules.extract`): environment, speed
+   limit, lane count, participant ids, and their own reading of the rest.
+2. The model answers the compact form (`prompting`) for the prepared
+   narrative, constrained to the answer's JSON Schema.
+3. The answer is checked against the schema, merged with the rules' reading
+   (each fact from the source that is right more often, disagreements
+   noted), and the merged scenario is verified. Problems go back to the model
+   in a bounded repair loop.
+4. If the model still has no usable answer, the rules' reading stands and a
+   note says so. A provider that cannot answer at all (no model, endpoint
+   down, timeout) is an error: nothing is invented.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, replace
+from typing import Any
+
+import jsonschema
+from sovarc.compiler.frontend import prompting
+from sovarc.compiler.frontend.providers.base import Provider
+from sovarc.dsl import verify
+from sovarc.dsl.errors import Severity
+from sovarc.dsl.ir import (
+    UNKNOWN,
+    Action,
+    ActionKind,
+    Crash,
+    CrashType,
+    Heading,
+    Participant,
+    Road,
+    RoadKind,
+    Scenario,
+    Side,
+    Unknown,
+)
+
+MAX_REPAIRS = 2
+
+
+class AnswerError(Exception):
+    """The model's answer cannot be used as it is; each problem is one line for the repair prompt."""
+
+    def __init__(self, problems: list[str]) -> None:
+        super().__init__("; ".join(problems))
+        self.problems = problems
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One participant as the model read it."""
+
+    heading: Heading | Unknown
+    lane: int | Unknown
+    actions: tuple[Action, ...]
+
+
+@dataclass(frozen=True)
+class Answer:
+    """The model's compact answer, as IR values."""
+
+    road: RoadKind
+    lanes: int | Unknown
+    participants: dict[str, Reading]
+    crash: Crash
+
+
+def _enum_or_unknown(value: Any, kind: type[Any]) -> Any:
+    return UNKNOWN if value == "unknown" else kind(value)
+
+
+def _action(word: str) -> Action:
+    if word.startswith("change_lane_"):
+        return Action(ActionKind.CHANGE_LANE, Side(word.removeprefix("change_lane_")))
+    return Action(ActionKind(word))
+
+
+def parse_answer(text: str, ids: list[str]) -> Answer:
+    """The answer as IR values; AnswerError when it is not JSON or breaks the answer schema."""
+    try:
+        data = json.loads(text)
+    except ValueError as exc:
+        raise AnswerError([f"the answer is not JSON ({exc.msg} at character {exc.pos})"]) from None
+    validator = jsonschema.Draft202012Validator(prompting.answer_schema(ids))
+    problems = [
+        f"{'/'.join(str(p) for p in error.absolute_path) or 'answer'}: {error.message}"
+        for error in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path)))
+    ]
+    if problems:
+        raise AnswerError(problems[:8])
+    people = {
+        pid: Reading(
+            _enum_or_unknown(p["heading"], Heading),
+            UNKNOWN if p["lane"] == "unknown" else p["lane"],
+            _dedupe(tuple(_action(a) for a in p["actions"])),
+        )
+        for pid, p in data["participants"].items()
+    }
+    c = data["crash"]
+    crash = Crash(CrashType(c["type"]), _enum_or_unknown(c["striker"], str), _enum_or_unknown(c["victim"], str))
+    return Answer(RoadKind(data["road"]), UNKNOWN if data["lanes"] == "unknown" else data["lanes"], people, crash)
+
+
+def _dedupe(actions: tuple[Action, ...]) -> tuple[Action, ...]:
+    out: list[Action] = []
+    for a in actions:
+        if not out or out[-1] != a:
+            out.append(a)
+    return tuple(out)
+
+
+def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
+    """The rules' reading with the model's facts merged in; notes name each disagreement and who won."""
+    notes: list[str] = []
+
+    def pick(what: str, ruled: Any, modelled: Any, rules_win: bool) -> Any:
+        if isinstance(ruled, Unknown):
+            return modelled
+        if isinstance(modelled, Unknown) or ruled == modelled:
+            return ruled
+        winner = ruled if rules_win else modelled
+        notes.append(f"{what}: rules read {ruled}, the model {modelled}; kept {winner}")
+        return winner
+
+    road = Road(
+        pick("road kind", rules.road.kind, answer.road, rules_win=True),
+        pick("lane count", rules.road.lanes, answer.lanes, rules_win=True),
+        rules.road.speed_limit,
+    )
+    people: list[Participant] = []
+    for p in rules.participants:
+        got = answer.participants[p.id]
+        people.append(
+            replace(
+                p,
+                heading=pick(f"{p.id} heading", p.heading, got.heading, rules_win=False),
+                lane=pick(f"{p.id} lane", p.lane, got.lane, rules_win=True),
+                actions=got.actions,
+            )
+        )
+    crash = answer.crash
+    if not isinstance(rules.crash.striker, Unknown) and rules.crash != crash:
+        notes.append(f"crash: rules read {_crash_words(rules.crash)}, the model {_crash_words(crash)}")
+    merged = replace(rules, road=road, participants=tuple(people), crash=crash)
+    return merged, notes
+
+
+def _crash_words(c: Crash) -> str:
+    return f"{c.type} by {c.striker} into {c.victim}"
+
+
+def model_reading(
+    rules: Scenario, text: str, provider: Provider, max_repairs: int = MAX_REPAIRS
+) -> tuple[Scenario, list[str]]:
+    """The rules' scenario with the model's reading merged in, repaired until it verifies."""
+    ids = [p.id for p in rules.participants]
+    narrative = prompting.prepared_narrative(text)
+    system = prompting.system_prompt()
+    schema = prompting.answer_schema(ids)
+    user = prompting.user_prompt(narrative, ids)
+    problems: list[str] = []
+    for attempt in range(max_repairs + 1):
+        answer_text = provider.complete_json(system, user, schema, max_tokens=prompting.answer_budget(ids))
+        try:
+            merged, notes = merge(rules, parse_answer(answer_text, ids))
+            problems = [d.message for d in verify(merged) if d.severity is Severity.ERROR]
+        except AnswerError as exc:
+            problems = exc.problems
+        if not problems:
+            if attempt:
+                notes.append(f"the model's answer was repaired in {attempt} round(s)")
+            return merged, notes
+        user = prompting.repair_prompt(narrative, ids, answer_text.strip(), problems)
+    return rules, [
+        f"the model gave no usable answer after {max_repairs} repair round(s) ({'; '.join(problems)}); "
+        "the dynamic layer is the rules' reading"
+    ]

@@ -1,0 +1,158 @@
+"""The model's side of the front end: the layered prompt, the compact answer form and its JSON Schema.
+
+The prompt is built from the reviewed text files in `prompts/` (package
+`sovarc.prompts`): an introduction, one file per layer of the paper
+(environment, road network and traffic guidance, dynamic objects) and the
+worked examples, each a narrative (`NN_name.txt`) with its answer
+(`NN_name.json`). The system prompt is the same for every report, so
+llama.cpp reuses its cached prefix and only the report itself is processed.
+
+The answer form is compact on purpose: only facts the model must decide,
+enum words and small integers, no free text. The model copies free text
+(a full IR schema makes it write out the narrative), and every token costs
+time on two CPU cores.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from functools import cache
+from importlib.resources import files
+from typing import Any
+
+from sovarc.compiler.frontend.text import normalize_names, sentences, up_to_first_impact
+
+PROMPT_FILES = ("system.md", "environment.md", "road.md", "dynamic.md")
+MAX_LANES = 8
+VEHICLE_ACTIONS = (
+    "follow_lane",
+    "turn_left",
+    "turn_right",
+    "change_lane_left",
+    "change_lane_right",
+    "go_across",
+    "stop",
+    "u_turn",
+    "drive_into",
+    "drive_off",
+    "retrograde",
+)
+PEDESTRIAN_ACTIONS = ("cross", "walk")
+HEADINGS = ("north", "east", "south", "west", "unknown")
+ROAD_KINDS = ("intersection", "t_junction", "straight")
+CRASH_TYPES = ("rear_end", "frontal", "side")
+MAX_ACTIONS = 5
+
+
+@dataclass(frozen=True)
+class Example:
+    name: str
+    narrative: str
+    answer: dict[str, Any]
+
+
+def _prompt_dir() -> Any:
+    return files("sovarc.prompts")
+
+
+@cache
+def examples() -> tuple[Example, ...]:
+    """The worked examples, in file-name order."""
+    folder = _prompt_dir() / "examples"
+    names = sorted(p.name[: -len(".txt")] for p in folder.iterdir() if p.name.endswith(".txt"))
+    return tuple(
+        Example(
+            name,
+            (folder / f"{name}.txt").read_text(encoding="utf-8").strip(),
+            json.loads((folder / f"{name}.json").read_text(encoding="utf-8")),
+        )
+        for name in names
+    )
+
+
+@cache
+def system_prompt() -> str:
+    """The layers, then the worked examples, each as report and answer."""
+    parts = [(_prompt_dir() / name).read_text(encoding="utf-8").strip() for name in PROMPT_FILES]
+    parts.append("## Worked examples")
+    for ex in examples():
+        parts.append(f"Report:\n{ex.narrative}\nAnswer:\n{compact_json(ex.answer)}")
+    return "\n\n".join(parts) + "\n"
+
+
+def compact_json(value: object) -> str:
+    """JSON on one line with the spacing the model is shown (and the grammar allows)."""
+    return json.dumps(value, ensure_ascii=False, separators=(",", ":"))
+
+
+def prepared_narrative(text: str) -> str:
+    """The pre-processing step: participants named V1/P1, and the narrative up to the first impact."""
+    return " ".join(up_to_first_impact(sentences(normalize_names(text))))
+
+
+def user_prompt(narrative: str, ids: list[str]) -> str:
+    return f"Report:\n{narrative}\nParticipants: {', '.join(ids)}\nAnswer:"
+
+
+def repair_prompt(narrative: str, ids: list[str], previous: str, problems: list[str]) -> str:
+    """The report again, the last answer and what is wrong with it."""
+    listed = "\n".join(f"- {p}" for p in problems)
+    return (
+        f"{user_prompt(narrative, ids)}\n{previous}\n\n"
+        f"That answer is not valid:\n{listed}\nAnswer again for the same report, fixing these problems.\nAnswer:"
+    )
+
+
+def answer_schema(ids: list[str]) -> dict[str, Any]:
+    """The JSON Schema of the compact answer for a report with these participant ids."""
+    lane: dict[str, Any] = {"enum": [*range(1, MAX_LANES + 1), "unknown"]}
+
+    def participant(pid: str) -> dict[str, Any]:
+        actions = PEDESTRIAN_ACTIONS if pid.startswith("P") else VEHICLE_ACTIONS
+        return {
+            "type": "object",
+            "properties": {
+                "heading": {"enum": list(HEADINGS)},
+                "lane": lane,
+                "actions": {
+                    "type": "array",
+                    "items": {"enum": list(actions)},
+                    "minItems": 1,
+                    "maxItems": MAX_ACTIONS,
+                },
+            },
+            "required": ["heading", "lane", "actions"],
+            "additionalProperties": False,
+        }
+
+    return {
+        "type": "object",
+        "properties": {
+            "road": {"enum": list(ROAD_KINDS)},
+            "lanes": lane,
+            "participants": {
+                "type": "object",
+                "properties": {pid: participant(pid) for pid in ids},
+                "required": list(ids),
+                "additionalProperties": False,
+            },
+            "crash": {
+                "type": "object",
+                "properties": {
+                    "type": {"enum": list(CRASH_TYPES)},
+                    "striker": {"enum": [*ids, "unknown"]},
+                    "victim": {"enum": [*ids, "unknown"]},
+                },
+                "required": ["type", "striker", "victim"],
+                "additionalProperties": False,
+            },
+        },
+        "required": ["road", "lanes", "participants", "crash"],
+        "additionalProperties": False,
+    }
+
+
+def answer_budget(ids: list[str]) -> int:
+    """max_tokens for an answer: enough for the longest valid one, so a cut-off means garbage."""
+    return 60 + 70 * len(ids)
