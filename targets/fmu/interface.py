@@ -9,9 +9,11 @@ frames and units; this module is their one definition, and `validate_fmu` checks
 from __future__ import annotations
 
 import re
+import zipfile
 from dataclasses import dataclass
 from enum import StrEnum
 from pathlib import Path
+from xml.etree import ElementTree
 
 from sovarc.dsl.errors import Diagnostic, InputError
 from sovarc.dsl.span import Span
@@ -139,14 +141,17 @@ def validate_fmu(path: str | Path) -> EgoFmu:
     def fail(messages: list[str]) -> FmuInterfaceError:
         return FmuInterfaceError([Diagnostic(m, span) for m in messages])
 
-    if not source.exists():
+    if not source.is_file():
         raise fail(["FMU not found"])
+    fmi_version = _fmi_version(source)
+    if fmi_version is None:
+        raise fail(["not an FMU: a zip archive with a modelDescription.xml was expected"])
+    if fmi_version != "2.0":
+        raise fail([f"FMI {fmi_version} FMU: the ego harness runs FMI 2.0 co-simulation FMUs"])
     try:
         md = read_model_description(str(source), validate=False)
     except Exception as exc:  # fmpy raises whatever zipfile or lxml raise
         raise fail([f"not a readable FMU: {type(exc).__name__}: {exc}"]) from None
-    if md.fmiVersion != "2.0":
-        raise fail([f"FMI {md.fmiVersion} FMU: the ego harness runs FMI 2.0 co-simulation FMUs"])
     if md.coSimulation is None:
         raise fail(["the FMU has no CoSimulation interface (model exchange only); export it for co-simulation"])
     problems = _check_variables({v.name: v for v in md.modelVariables})
@@ -154,6 +159,17 @@ def validate_fmu(path: str | Path) -> EgoFmu:
         raise fail(problems)
     refs = {v.name: v.valueReference for v in md.modelVariables if v.name in BY_NAME}
     return EgoFmu(source, md.modelName, md.coSimulation.modelIdentifier, md.guid, refs)
+
+
+def _fmi_version(source: Path) -> str | None:
+    """The fmiVersion of the archive's modelDescription.xml root, or None when there is none to read."""
+    try:
+        with zipfile.ZipFile(source) as archive, archive.open("modelDescription.xml") as description:
+            for _event, element in ElementTree.iterparse(description, events=("start",)):
+                return element.get("fmiVersion", "")
+    except (zipfile.BadZipFile, KeyError, ElementTree.ParseError, OSError):
+        return None
+    return None
 
 
 def _check_variables(found: dict[str, object]) -> list[str]:

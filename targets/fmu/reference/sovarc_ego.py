@@ -105,7 +105,7 @@ class SovarcEgo(Fmi2Slave):
     def _follow(self, line, seen):
         """IDM towards the wanted speed, behind the nearest object on the path."""
         v = max(self.ego_speed, 0.0)
-        wanted = max(min(self.target_speed, math.sqrt(LATERAL / max(line.curvature(30.0), 1e-6))), 1.0)
+        wanted = max(min(self.target_speed, math.sqrt(LATERAL / max(line.curvature(40.0), 1e-6))), 1.0)
         free = 1.0 - (v / wanted) ** 4
         leader = None
         for o in seen:
@@ -115,12 +115,13 @@ class SovarcEgo(Fmi2Slave):
             gap = s - o["length"] / 2.0
             if leader is None or gap < leader[0]:
                 leader = (gap, o["speed"] * math.cos(math.radians(o["heading"]) - direction))
+        cruise = max(ACCEL * free, -COMFORT)  # slowing for a bend or a lower wanted speed is never harsh
         if leader is None:
-            return max(min(ACCEL * free, ACCEL), -MAX_DECEL)
+            return min(cruise, ACCEL)
         gap, lead_speed = leader
         wish = STANDSTILL + v * HEADWAY + v * (v - lead_speed) / (2.0 * math.sqrt(ACCEL * COMFORT))
         interaction = (max(wish, 0.0) / max(gap, 0.1)) ** 2
-        return max(min(ACCEL * (free - interaction), ACCEL), -MAX_DECEL)
+        return max(min(cruise - ACCEL * interaction, ACCEL), -MAX_DECEL)
 
     def _time_to_collision(self, line, seen):
         """The first time, within HORIZON, that an object and the ego (along its path) touch."""
@@ -198,15 +199,18 @@ class _Path:
         return best[1], best[2], best[3]
 
     def curvature(self, within):
-        """The sharpest turn per metre over the first `within` metres of route points (the ego's own
-        position, points[0], is left out: steering back onto the route is no bend)."""
+        """The sharpest turn per metre over the first `within` metres, measured between chords two
+        route points long (so a lane's sideways shift through a junction is no bend). The ego's own
+        position, points[0], is left out: steering back onto the route is no bend either."""
         sharpest, done = 0.0, 0.0
-        for k in range(2, len(self.points) - 1):
-            done += self.lengths[k - 1]
+        route = self.points[1:]
+        for k in range(2, len(route) - 2):
+            done = math.dist(route[0], route[k])
             if done > within:
                 break
-            (ax, ay), (bx, by), (cx, cy) = self.points[k - 1], self.points[k], self.points[k + 1]
+            (ax, ay), (bx, by), (cx, cy) = route[k - 2], route[k], route[k + 2]
             turn = math.atan2(cy - by, cx - bx) - math.atan2(by - ay, bx - ax)
             turn = abs((turn + math.pi) % (2.0 * math.pi) - math.pi)
-            sharpest = max(sharpest, turn / max(0.5 * (self.lengths[k - 1] + self.lengths[k]), 1e-3))
+            span = 0.5 * (math.dist((ax, ay), (bx, by)) + math.dist((bx, by), (cx, cy)))
+            sharpest = max(sharpest, turn / max(span, 1e-3))
         return sharpest

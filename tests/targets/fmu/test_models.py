@@ -1,0 +1,76 @@
+"""The pieces the harness is made of: bicycle model, body geometry, routes and ego tasks."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from sovarc.compiler.plan import CAR, PEDESTRIAN
+from sovarc.targets.fmu.bicycle import MAX_BRAKE, Geometry, State, advance
+from sovarc.targets.fmu.geometry import corners, overlap, time_to_collision
+from sovarc.targets.fmu.polyline import Polyline
+from sovarc.targets.fmu.task import GOAL_MARGIN, MIN_CRUISE, make_task, to_ego_frame
+
+from tests.targets.fmu.plans import car_following
+
+CAR_GEOMETRY = Geometry.of(CAR)
+
+
+def test_bicycle_goes_straight_turns_left_and_never_reverses() -> None:
+    state = State(0.0, 0.0, 90.0, 10.0)  # heading east
+    for _ in range(20):
+        state = advance(state, 0.0, 0.0, 0.05, CAR_GEOMETRY)
+    assert (state.x, state.y, state.heading) == pytest.approx((10.0, 0.0, 90.0))
+    left = State(0.0, 0.0, 0.0, 10.0)  # heading north, positive steer is to the left: heading decreases
+    for _ in range(10):
+        left = advance(left, 0.0, 0.2, 0.05, CAR_GEOMETRY)
+    assert 300.0 < left.heading < 360.0 and left.x < 0.0
+    stopped = advance(State(0.0, 0.0, 0.0, 0.1), -20.0, 0.0, 0.05, CAR_GEOMETRY)
+    assert stopped.speed == 0.0 and stopped.accel == pytest.approx(-2.0)  # clamped braking, then rest
+    hard = advance(State(0.0, 0.0, 0.0, 20.0), -20.0, 0.0, 0.05, CAR_GEOMETRY)
+    assert hard.accel == pytest.approx(-MAX_BRAKE)
+
+
+def test_boxes_overlap_and_the_front_bumper_is_the_reference_point() -> None:
+    ego = corners(10.0, 0.0, 90.0, CAR)  # front bumper at x = 10, body back to x = 5.4
+    assert min(x for x, _ in ego) == pytest.approx(5.4) and max(x for x, _ in ego) == pytest.approx(10.0)
+    assert overlap(ego, corners(14.0, 0.0, 90.0, CAR))  # its back at 9.4
+    assert not overlap(ego, corners(14.7, 0.0, 90.0, CAR))
+    assert not overlap(ego, corners(10.0, 2.0, 90.0, CAR))  # side by side, 0.2 m apart
+    assert overlap(corners(0.0, 0.0, 0.0, PEDESTRIAN), corners(0.2, 0.2, 45.0, PEDESTRIAN))
+
+
+def test_time_to_collision_head_on_and_apart() -> None:
+    def one(*values: float) -> tuple[np.ndarray, ...]:
+        return tuple(np.array([v]) for v in values)
+
+    # fronts 20 m apart, closing at 20 m/s; the three-disc cover touches a little before the boxes do
+    ttc = time_to_collision(one(0.0, 0.0, 90.0, 10.0), CAR, one(20.0, 0.0, 270.0, 10.0), CAR)
+    assert 0.8 < float(ttc[0]) <= 1.0
+    apart = time_to_collision(one(0.0, 0.0, 90.0, 10.0), CAR, one(0.0, 3.5, 90.0, 10.0), CAR)
+    assert math.isinf(float(apart[0]))  # the next lane over, same speed
+
+
+def test_polyline_projection_and_extension() -> None:
+    line = Polyline([(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)])
+    assert line.length == pytest.approx(20.0)
+    assert line.project((12.0, 4.0)) == pytest.approx((14.0, 2.0))
+    assert line.heading_at(5.0) == pytest.approx(90.0) and line.heading_at(15.0) == pytest.approx(0.0)
+    longer = line.extended(5.0, towards=[(10.0, 12.0)])
+    assert longer.length == pytest.approx(27.0) and longer.point_at(27.0) == pytest.approx((10.0, 17.0))
+    assert to_ego_frame(0.0, 10.0, 0.0, 0.0, 90.0) == pytest.approx((0.0, 10.0))  # facing east, north is left
+
+
+def test_an_ego_task_follows_the_planned_path_and_speeds() -> None:
+    plan = car_following()
+    task = make_task(plan, "V1")
+    trajectory = plan.trajectory("V1")
+    assert (task.start.x, task.start.y) == (trajectory.samples[0].x, trajectory.samples[0].y)
+    assert task.goal == pytest.approx(task.path_end + GOAL_MARGIN)
+    assert task.target_speed(1.0) == pytest.approx(14.0)
+    assert task.target_speed(task.path_end - 1.0) == pytest.approx(9.0, abs=0.1)
+    assert task.target_speed(task.path_end + 5.0) == task.cruise >= MIN_CRUISE
+    ahead = task.path_points(0.0, task.start.x, task.start.y, task.start.heading)
+    assert ahead[0] == pytest.approx((4.0, 0.0)) and ahead[-1] == pytest.approx((48.0, 0.0))
+    assert task.budget > plan.duration
