@@ -7,11 +7,12 @@ FollowTrajectoryAction with a Polyline and absolute Timing, SimulationTimeCondit
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 from lxml import etree
 from sovarc.compiler.plan import Plan
-from sovarc.targets.openscenario.bodies import reference_point
+from sovarc.targets.openscenario.bodies import TAU, reference_point
 from sovarc.targets.openscenario.entities import Actor
 from sovarc.targets.openscenario.versions import Dialect
 from sovarc.targets.openscenario.xml import ANGLE_DIGITS, TIME_DIGITS, el, num
@@ -70,9 +71,15 @@ def _init_private(actor: Actor) -> etree._Element:
 
 
 def _trajectory(actor: Actor) -> etree._Element:
+    """The Polyline of reference points. Headings are unwrapped (each within pi of the one before, so
+    they may leave [0, 2 pi)): a player that interpolates them linearly never spins a body around."""
     vertices = []
+    previous: float | None = None
     for sample in actor.trajectory.samples:
         x, y, h = reference_point(sample, actor.body)
+        if previous is not None:
+            h = previous + (h - previous + math.pi) % TAU - math.pi
+        previous = h
         vertices.append(el("Vertex", {"time": num(sample.t, TIME_DIGITS)}, world_position(x, y, h)))
     return el(
         "Trajectory",

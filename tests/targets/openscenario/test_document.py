@@ -3,6 +3,7 @@ version, determinism, environment, ego marker and the reference-point conversion
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import replace
 
@@ -20,7 +21,7 @@ from sovarc.targets.openscenario.versions import dialect
 
 from tests.conftest import Golden
 from tests.targets.openscenario.conftest import FIXTURES
-from tests.targets.openscenario.plans import CASES
+from tests.targets.openscenario.plans import CASES, with_samples
 
 
 def document(plan: Plan, version: str = "1.3", ego: str | None = None) -> tuple[bytes, list]:
@@ -207,3 +208,12 @@ def test_a_participant_without_trajectory_is_reported() -> None:
     scenario = replace(plan.scenario, participants=(*plan.scenario.participants, v3))
     _, notes = document(replace(plan, scenario=scenario))
     assert "V3 has no trajectory in the plan: not in the scenario" in _messages(notes, Severity.WARNING)
+
+
+def test_headings_along_a_trajectory_never_jump_a_full_turn() -> None:
+    """East is h = 0: a car weaving around east must not flip between 0.02 and 6.26 (a player would spin it)."""
+    plan = with_samples(CASES["t_bone"](), "V2", lambda s: replace(s, heading=89.0 if round(s.t * 10) % 2 else 91.0))
+    root = parse(document(plan)[0])
+    headings = [float(w.get("h")) for w in root.findall(".//ManeuverGroup[@name='V2_group']//WorldPosition")]
+    assert max(abs(b - a) for a, b in itertools.pairwise(headings)) < 0.04  # 2 degrees, not 358
+    assert headings[0] == pytest.approx(osc_heading(91.0), abs=1e-4)

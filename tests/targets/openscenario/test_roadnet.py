@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from lxml import etree
 from sovarc.dsl.errors import InputError
+from sovarc.targets.openscenario import emit_files
 from sovarc.targets.openscenario.readback import read_scenario
 from sovarc.targets.openscenario.roadnet import write_road_network
 from sovarc.targets.openscenario.schema import (
@@ -21,7 +23,7 @@ from sovarc.targets.openscenario.versions import VERSIONS, dialect
 
 from tests.conftest import SHARED
 from tests.targets.openscenario.conftest import Emitter
-from tests.targets.openscenario.plans import TOWN
+from tests.targets.openscenario.plans import CASES, TOWN
 
 ESMINI_MAP = SHARED / "data" / "opendrive" / "straight_500m.xodr"
 
@@ -84,3 +86,12 @@ class TestSumoNetworkConverted:
         assert not finding.passed
         assert finding.message.startswith("town.xodr is not valid OpenDRIVE 1.4: line ")
         assert "lenght" in finding.message
+
+
+@pytest.mark.parametrize("xodr", sorted(p.name for p in (SHARED / "data" / "opendrive").glob("*.xodr")))
+def test_an_opendrive_map_travels_with_the_scenario_and_validates(xodr: str, tmp_path: Path) -> None:
+    plan = replace(CASES["rear_end"](), map=str(SHARED / "data" / "opendrive" / xodr))
+    files = emit_files(plan, tmp_path)
+    assert files.xodr.name == xodr
+    finding, _ = xodr_finding(read_scenario(files.xosc))
+    assert finding.passed and finding.message.startswith(f"{xodr} valid against the OpenDRIVE 1.")
