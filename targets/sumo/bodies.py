@@ -147,10 +147,7 @@ def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]
             else:
                 lo = mid
     body_a, body_b = between(*a, lo), between(*b, lo)
-    if hi == 0.0:
-        near = [(body_a.centre, body_b.centre)]
-    else:
-        near = _near_pairs(body_a, body_b)
+    near = [(body_a.centre, body_b.centre)] if hi == 0.0 else _near_pairs(body_a, body_b)
     pa, pb = near[0]
     direction = (pb[0] - pa[0], pb[1] - pa[1])
     if math.hypot(*direction) < 1e-9:  # touching at a point: take the centres' direction

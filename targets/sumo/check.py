@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 from xml.etree import ElementTree
 
@@ -14,7 +15,8 @@ from sovarc.targets.sumo.emit import emit
 from sovarc.targets.sumo.network import read_network
 from sovarc.targets.sumo.oracle import judge
 from sovarc.targets.sumo.replay import replay
-from sovarc.targets.verdict import Verdict
+from sovarc.targets.sumo.schemas import validate_folder
+from sovarc.targets.verdict import Finding, Verdict
 
 
 def check(plan: Plan, folder: str | os.PathLike[str] | None = None, *, fresh_process: bool = False) -> Verdict:
@@ -39,4 +41,12 @@ def _check(plan: Plan, config: Path, fresh_process: bool) -> Verdict:
     net = ElementTree.parse(config).getroot().find("./input/net-file")
     if net is None:
         raise OracleError(f"{config} names no network")
-    return judge(plan, trace, read_network(config.parent / net.get("value", "")))
+    verdict = judge(plan, trace, read_network(config.parent / net.get("value", "")))
+    return replace(verdict, findings=(_schema_finding(config.parent), *verdict.findings))
+
+
+def _schema_finding(folder: Path) -> Finding:
+    errors = validate_folder(folder)
+    if errors:
+        return Finding("xsd", False, f"{len(errors)} error(s) against SUMO's schemas, first: {errors[0]}")
+    return Finding("xsd", True, "the scenario files are valid against SUMO's XSD schemas")

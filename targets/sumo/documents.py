@@ -55,7 +55,7 @@ def time_digits(step: float) -> int:
 
 
 def note(plan: Plan, what: str) -> str:
-    return f"sovarc: {what} of scenario {plan.scenario.name} on {plan.site}"
+    return f"sovarc: {what} (scenario {plan.scenario.name}, site {plan.site})"
 
 
 # --- scenario.add.xml -------------------------------------------------------------------

@@ -270,4 +270,41 @@ def with_trajectory(plan: Plan, trajectory: Trajectory) -> Plan:
     )
 
 
-__all__ = ["PEDESTRIAN", "SCENES", "drive", "lane_chain", "shape_of", "with_trajectory"]
+# --- deliberately broken plans ----------------------------------------------------------
+
+
+def no_collision() -> Plan:
+    """The rear-end, but V1 is 15 m further back: it never reaches V2 before the end."""
+    plan = rear_end()
+    return with_trajectory(plan, drive("V1", Role.VEHICLE, ("ave2_0",), 22.0, 150.0 - CAR.length - 15.0))
+
+
+def wrong_pair() -> Plan:
+    """The rear-end with V3 stopped between them: V1 strikes V3 first."""
+    plan = rear_end()
+    v3 = drive("V3", Role.VEHICLE, ("ave2_0",), 0.0, 120.0, impact_s=None)
+    return replace(plan, trajectories=(*plan.trajectories, v3))
+
+
+def wrong_angle() -> Plan:
+    """The T-bone with V2 6 m late: V2's front strikes V1's left side instead."""
+    plan = t_bone()
+    late = plan.trajectory("V2")
+    shape = shape_of(late.lanes)
+    s_at_impact = s_of(shape, (late.at(IMPACT_T).x, late.at(IMPACT_T).y)) - 6.0
+    return with_trajectory(plan, drive("V2", Role.VEHICLE, late.lanes, 9.7, s_at_impact, shape=shape))
+
+
+def lane_crossing() -> Plan:
+    """The rear-end with V1 driving 1.5 m left of its lane's centre, over the line into lane 2."""
+    plan = rear_end()
+    shape = shape_of(("ave2_0",), offset=1.5)
+    return with_trajectory(plan, drive("V1", Role.VEHICLE, ("ave2_0",), 22.0, 150.0 - CAR.length, shape=shape))
+
+
+BROKEN: dict[str, Callable[[], Plan]] = {
+    "no_collision": no_collision,
+    "wrong_pair": wrong_pair,
+    "wrong_angle": wrong_angle,
+    "lane_crossing": lane_crossing,
+}
