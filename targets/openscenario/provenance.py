@@ -99,6 +99,8 @@ def parameter_declarations(plan: Plan, options: Options) -> etree._Element:
         ("sovarc_step", "double", num(plan.step, TIME_DIGITS)),
         ("sovarc_osc_version", "string", options.version),
         (EGO, "string", options.ego),
+        ("sovarc_road_kind", "string", str(s.road.kind)),
+        ("sovarc_road_lanes", "string", str(s.road.lanes)),
         ("sovarc_speed_limit", "string", str(limit) if isinstance(limit, Unknown) else f"{limit.value:g} {limit.unit}"),
         (CRASH_TYPE, "string", plan.impact.type.value),
         (STRIKER, "string", plan.impact.striker),
