@@ -44,14 +44,15 @@ _WEATHER = [
     (Weather.CLEAR, r"\bclear\b(?! of)|no adverse (?:atmospheric|weather)"),
     (Weather.CLOUDY, r"\bcloudy\b|\bovercast\b"),
     (Weather.RAINY, r"\brain(?:y|ing|ed)?\b|\bdrizzl"),
-    (Weather.FOGGY, r"\bfog(?:gy)?\b|\bmist"),
-    (Weather.SNOWY, r"\bsnow(?:y|ing)?\b|\bsleet"),
-    (Weather.WINDY, r"\bwind(?:y)?\b"),
+    (Weather.FOGGY, r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
+    (Weather.SNOWY, r"\bsnow(?:y|ing|ed|fall)?\b(?! embankment| bank| pile)|\bsleet"),
+    (Weather.WINDY, r"\bwindy\b|\bwinds? (?:was|were)\b|\bhigh winds?\b"),
     (Weather.SUNNY, r"\bsunny\b"),
 ]
-_DARK = r"\bdark\b|\bnight(?:time)?\b|\bdusk\b|\bdawn\b"
-_LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by)\b"
-_DAY = r"\bdaylight\b|\bdaytime\b|\b(?:during the|in the) (?:day|morning|afternoon)\b|\bsunny\b"
+_DARK = r"\bdark(?:ness)?\b|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+_LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
+_DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
+_DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
 
 _SPEED = re.compile(r"(\d{2,3})\s*-?\s*(km/?h|kmph|kph|mph)\b", re.IGNORECASE)
 _HEADING = re.compile(r"\b(north|east|south|west)(?:bound|ward|erly)?\b", re.IGNORECASE)
@@ -99,7 +100,9 @@ def extract_environment(text: str) -> Environment:
     low = text.lower()
     weather = tuple(w for w, pattern in _WEATHER if re.search(pattern, low))
     lighting: list[Lighting] = []
-    if re.search(_LIT, low):
+    if re.search(_DAYLIGHT, low):  # stated outright, it wins over "the night before" and the like
+        lighting.append(Lighting.DAYLIGHT)
+    elif re.search(_LIT, low):
         lighting += [Lighting.DARK, Lighting.STREET_LIGHTS]
     elif re.search(_DARK, low):
         lighting.append(Lighting.DARK)
@@ -118,26 +121,29 @@ def first_speed(text: str) -> Speed | Unknown:
 
 
 def extract_speed_limit(text: str) -> Speed | Unknown:
-    """The posted limit: the first speed in the first sentence about a limit."""
+    """The posted limit; with several (a side road, a ramp, a school zone), the lowest, as the ground truth has it."""
+    limits: list[Speed] = []
     for sentence in sentences(text):
         if re.search(r"speed limits?|posted|limit", sentence, re.IGNORECASE):
-            limit = first_speed(sentence)
-            if not isinstance(limit, Unknown):
-                return limit
-    return UNKNOWN
+            found = [(int(v), u.lower()) for v, u in _SPEED.findall(sentence)]
+            metric = [Speed(v, SpeedUnit.KMH) for v, u in found if u != "mph"]
+            limits += metric or [Speed(v, SpeedUnit.MPH) for v, u in found]
+    return min(limits, key=Speed.to_mps) if limits else UNKNOWN
 
 
 def extract_lanes(text: str) -> int | Unknown:
     """Lanes of the widest road, both directions together."""
     low = text.lower()
     counts: list[int] = []
-    for m in re.finditer(_NUMBER + r"[- ]lanes? (?:in )?(?:each|either|per|both) directions?", low):
+    each = r"(?: of travel)? (?:in )?(?:each|either|per|both)(?: the \w+ and \w+)? directions?"
+    for m in re.finditer(_NUMBER + r"[- ]lanes?" + each, low):
         counts.append(2 * _number(m.group(1)))
-    for m in re.finditer(_NUMBER + r"[- ]lanes?\b(?! (?:in )?(?:each|either|per|both) direction)", low):
-        tail = low[m.end() : m.end() + 40]
+    for m in re.finditer(_NUMBER + r"[- ]lanes?\b(?!" + each + ")", low):
+        tail = low[m.end() : m.end() + 60]
         if re.match(
-            r"[,]? ?(?:two-way|undivided|divided|roadway|road|highway|street|t-intersection|intersection|"
-            r"interstate|one-way|avenue|boulevard|residential|rural|urban|city|county|state)",
+            r",? ?(?:\(|of travel\b|(?:[\w/-]+,? ){0,4}?(?:two-way|undivided|divided|roadway|road|highway|street|"
+            r"t-intersection|intersection|interstate|one-way|avenue|boulevard|arterial|freeway|expressway|route)\b|"
+            r"(?:residential|rural|urban|city|county|state))",
             tail,
         ):
             counts.append(_number(m.group(1)))
