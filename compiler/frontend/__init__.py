@@ -80,6 +80,11 @@ class FrontEnd:
             self._provider = CachedProvider(inner, self.cache_dir) if self.use_cache else inner
         return self._provider
 
+    def use(self, provider: Provider) -> FrontEnd:
+        """Read with this provider (a recorded one in tests, say) instead of building one from `llm`."""
+        self._provider = provider
+        return self
+
     def extract(self, source: Source) -> Extraction:
         from sovarc.compiler.frontend.defaults import apply_defaults
         from sovarc.compiler.frontend.rules import extract

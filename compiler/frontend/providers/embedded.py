@@ -45,7 +45,7 @@ class EmbeddedProvider:
         threads: int = 2,
         ctx: int = 8192,
         seed: int = DEFAULT_SEED,
-        timeout_s: float = 300.0,
+        timeout_s: float = 120.0,
         log_file: Path | None = None,
         prefix_dir: Path | None = None,
     ) -> None:
@@ -135,10 +135,16 @@ class EmbeddedProvider:
 
     def _call(self, request: dict[str, Any]) -> dict[str, Any]:
         self.load()
-        reply = self._exchange(request, self.timeout_s, "answering")
+        reply = self._exchange(request, self._time_allowed(request), "answering")
         if "ok" not in reply:
             raise ProviderError(f"the embedded model failed: {reply.get('error')} (llama.cpp log: {self.log_file})")
         return reply["ok"]
+
+    def _time_allowed(self, request: dict[str, Any]) -> float:
+        """The timeout, plus time to read the prompt at a slow 10 tokens/s (about 4 characters a token):
+        the first request of a process may have to process the whole system prompt."""
+        characters = sum(len(m["content"]) for m in request["messages"])
+        return self.timeout_s + characters / 4 / 10
 
     def _exchange(self, message: dict[str, Any], timeout_s: float, doing: str) -> dict[str, Any]:
         """Send one line to the worker and read one line back within `timeout_s`."""
