@@ -17,7 +17,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 Point = tuple[float, float]
-CELL = 25.0  # m, side of a spatial index cell
+CELL = 10.0  # m, side of a spatial index cell
 HEADING_MATCH = 60.0  # degrees: a lane runs "the same way" as a participant within this
 
 
@@ -31,6 +31,7 @@ class Lane:
     shape: tuple[Point, ...]
     internal: bool
     pedestrian_only: bool  # a sidewalk
+    ends: tuple[str, str] = ("", "")  # the edge's from and to junctions
 
 
 @dataclass(frozen=True)
@@ -60,6 +61,18 @@ class Network:
                     for j in range(_cell(y0 - reach), _cell(y1 + reach) + 1):
                         grid[(i, j)].add(lane.id)
         self._grid = {key: tuple(sorted(ids)) for key, ids in grid.items()}
+        by_ends: dict[tuple[str, str], list[Lane]] = defaultdict(list)
+        for lane in sorted(self.lanes.values(), key=lambda lane: lane.id):
+            if not lane.internal:
+                by_ends[lane.ends].append(lane)
+        self._by_ends = {ends: tuple(lanes) for ends, lanes in by_ends.items()}
+
+    def alongside(self, lane: Lane) -> list[Lane]:
+        """The lanes beside `lane`: the others of its edge and those of the edge the other way."""
+        if lane.internal:
+            return []
+        reverse = (lane.ends[1], lane.ends[0])
+        return [other for other in self._by_ends.get(lane.ends, ()) + self._by_ends.get(reverse, ()) if other != lane]
 
     def near(self, x: float, y: float, radius: float) -> list[Lane]:
         """Lanes with some part within about `radius` of the point, sorted by id."""
@@ -95,20 +108,23 @@ class Network:
 
         Among the lanes whose corridor holds the point (overlapping junction lanes, or none),
         the participant's own lanes (`prefer`) come first, then lanes running its way, then the
-        nearest centre line. Vehicles are never placed on sidewalks; pedestrians anywhere.
+        nearest centre line. Vehicles are never placed on sidewalks, nor pedestrians on the
+        vehicles' junction lanes (SUMO walks people along edges, not through junction lanes).
         """
-        ranked: list[tuple[tuple[int, int, int, float, str], Spot]] = []
-        for lane in self.near(x, y, 2 * CELL):
-            if lane.pedestrian_only and not pedestrian:
-                continue
-            spot, distance = self.spot(lane, x, y)
-            inside = distance <= lane.width / 2.0 + 1e-6
-            along = abs(_angle_diff(spot.heading, heading)) <= HEADING_MATCH
-            key = (0 if inside else 1, 0 if lane.id in prefer else 1, 0 if along else 1, round(distance, 6), lane.id)
-            ranked.append((key, spot))
-        if not ranked:
-            raise ValueError(f"no lane within {2 * CELL:.0f} m of ({x:.2f}, {y:.2f})")
-        return min(ranked, key=lambda item: item[0])[1]
+        # a lane whose corridor holds the point is indexed in the point's own cell
+        for radius in (0.0, CELL, 5 * CELL):
+            ranked: list[tuple[tuple[int, int, int, float, str], Spot]] = []
+            for lane in self.near(x, y, radius):
+                if (lane.pedestrian_only and not pedestrian) or (lane.internal and pedestrian):
+                    continue
+                spot, distance = self.spot(lane, x, y)
+                inside = distance <= lane.width / 2.0 + 1e-6
+                along = abs(_angle_diff(spot.heading, heading)) <= HEADING_MATCH
+                key = (0 if inside else 1, 0 if lane.id in prefer else 1, 0 if along else 1, distance, lane.id)
+                ranked.append((key, spot))
+            if ranked and (radius > 0.0 or min(ranked)[0][0] == 0):
+                return min(ranked, key=lambda item: item[0])[1]
+        raise ValueError(f"no lane within {5 * CELL:.0f} m of ({x:.2f}, {y:.2f})")
 
     def next_normal_lane(self, lane: Lane) -> Lane | None:
         """The first non-internal lane reached from an internal one."""
@@ -148,11 +164,12 @@ def _read(path: str, _stamp: tuple[int, int]) -> Network:
     lanes: list[Lane] = []
     successors: dict[str, str] = {}
     predecessors: dict[str, str] = {}
-    edge_id, internal = "", False
+    edge_id, internal, ends = "", False, ("", "")
     for event, element in ElementTree.iterparse(path, events=("start", "end")):
         if event == "start":
             if element.tag == "edge":
                 edge_id, internal = element.get("id", ""), element.get("function") == "internal"
+                ends = (element.get("from", ""), element.get("to", ""))
             continue
         if element.tag == "lane":
             allow = element.get("allow", "")
@@ -166,6 +183,7 @@ def _read(path: str, _stamp: tuple[int, int]) -> Network:
                     shape=_shape(element.get("shape", "")),
                     internal=internal,
                     pedestrian_only=allow.split() == ["pedestrian"],
+                    ends=ends,
                 )
             )
         elif element.tag == "connection":

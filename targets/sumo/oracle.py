@@ -2,9 +2,9 @@
 
 Checks, in order:
 - `replay`: every participant is in the simulation at every step, on its recorded position.
-- `collision`: some participants collide. SUMO's own detection (`getCollisions`) comes first;
-  where it is blind (see below) the bodies, as SUMO placed them, overlapping counts too, and
-  the verdict says which of the two saw it.
+- `collision`: some participants collide. SUMO's own detection (`getCollisions`) comes first,
+  confirmed by the bodies (as SUMO placed them) overlapping at some step; where SUMO is blind
+  (see below) the bodies overlapping counts too, and the verdict says which of the two saw it.
 - `pair`: the first collision is between the report's striker and victim.
 - `impact_angle`: at the first touch, the faces and the angle between headings match the
   crash type: rear_end = striker front into victim rear, headings within 45 degrees;
@@ -52,11 +52,11 @@ class Crash:
 
 
 def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
-    crashes = _crashes(plan, trace)
+    crashes, unconfirmed = _crashes(plan, trace)
     striker, victim = plan.impact.striker, plan.impact.victim
     pair = tuple(sorted((striker, victim)))
     hit = next((c for c in crashes if c.pair == pair), None)
-    contact = _contact(plan, trace, hit) if hit else None
+    contact = _contact(plan, trace) if hit else None
     until = contact.time if contact else trace.times[-1]
     findings = [
         _replay_finding(plan, trace),
@@ -73,6 +73,8 @@ def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
         ],
         "planned_impact_time": _t(plan.impact.time),
     }
+    if unconfirmed:
+        facts["sumo_collisions_without_contact"] = [list(pair) for pair in unconfirmed]
     if contact:
         facts["impact"] = {
             "time": _t(contact.time),
@@ -92,18 +94,27 @@ def body_of(t: Trajectory, pose: Pose) -> Body:
     return Body(pose.x, pose.y, pose.angle, t.body.length, t.body.width, t.body.vclass != "pedestrian")
 
 
-def _crashes(plan: Plan, trace: Trace) -> list[Crash]:
+def _crashes(plan: Plan, trace: Trace) -> tuple[list[Crash], list[tuple[str, str]]]:
+    """Collisions in order, and the pairs SUMO reported whose bodies never touch.
+
+    SUMO's report counts when the bodies, as SUMO placed them, overlap at some step: its
+    one-dimensional lane check takes a wrong-way driver's body to lie behind its front along
+    the lane, and so reports a head-on a body length early, or a near miss as a crash.
+    """
     sumo = {tuple(sorted((c.collider, c.victim))): c for c in trace.collisions}
     found: list[Crash] = []
+    unconfirmed: list[tuple[str, str]] = []
     for a, b in itertools.combinations(sorted(t.participant for t in plan.trajectories), 2):
         key = (a, b)
         step = _first_overlap(plan, trace, a, b)
         reported = sumo.get(key)
-        if reported is not None:
+        if reported is not None and step is None:
+            unconfirmed.append(key)
+        elif reported is not None:
             found.append(Crash(key, reported.first, "sumo", reported.kind))
         elif step is not None:
             found.append(Crash(key, trace.times[step], "bodies", None))
-    return sorted(found, key=lambda c: (c.time, c.pair))
+    return sorted(found, key=lambda c: (c.time, c.pair)), unconfirmed
 
 
 def _first_overlap(plan: Plan, trace: Trace, a: str, b: str) -> int | None:
@@ -114,12 +125,11 @@ def _first_overlap(plan: Plan, trace: Trace, a: str, b: str) -> int | None:
     return None
 
 
-def _contact(plan: Plan, trace: Trace, crash: Crash) -> Contact:
+def _contact(plan: Plan, trace: Trace) -> Contact:
     """The striker's and victim's first touch, from the poses SUMO had them in."""
     s, v = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
     k = _first_overlap(plan, trace, s.participant, v.participant)
-    if k is None:  # SUMO saw it, the rectangles never overlap: judge the step SUMO reported
-        k = min(range(len(trace.times)), key=lambda i: abs(trace.times[i] - crash.time))
+    assert k is not None, "a crash is confirmed by the bodies"
     j = max(k - 1, 0)
     ps, pv = trace.poses[s.participant], trace.poses[v.participant]
     if any(p is None for p in (ps[j], ps[k], pv[j], pv[k])):
@@ -236,14 +246,29 @@ def _lanes_finding(plan: Plan, trace: Trace, network: Network, until: float) -> 
 
 
 def lane_violation(network: Network, t: Trajectory, pose: Pose) -> str | None:
-    """A lane the body reaches into (beyond the tolerance) that the participant may not use."""
+    """A lane beside the one SUMO has the participant on (same road, either direction) that its
+    body reaches into beyond the tolerance, or that lane itself, when its actions do not allow it.
+    Lanes ahead or behind (a body overhanging the end of a lane) and junctions are not checked."""
     allowed = set(t.lanes)
+    lane = network.lanes.get(pose.lane)
+    if lane is None or lane.internal:
+        return None
     pedestrian = t.body.vclass == "pedestrian"
-    if not pedestrian and pose.lane and not pose.lane.startswith(":") and pose.lane not in allowed:
-        return pose.lane
+    if lane.id not in allowed and not (pedestrian and lane.pedestrian_only):
+        return None if pedestrian else lane.id
+    beside = [
+        other
+        for other in network.alongside(lane)
+        if other.id not in allowed and not (pedestrian and other.pedestrian_only)
+    ]
     for x, y in body_of(t, pose).corners(shrink=LINE_TOLERANCE):
-        here = [lane for lane in network.near(x, y, 1.0) if network.spot(lane, x, y)[1] <= lane.width / 2.0]
-        roads = [lane for lane in here if not lane.internal and not (pedestrian and lane.pedestrian_only)]
-        if roads and not any(lane.id in allowed for lane in here):
-            return roads[0].id
+        for other in beside:
+            if network.spot(other, x, y)[1] <= other.width / 2.0 and not _in_allowed(network, allowed, x, y):
+                return other.id
     return None
+
+
+def _in_allowed(network: Network, allowed: set[str], x: float, y: float) -> bool:
+    return any(
+        network.spot(lane, x, y)[1] <= lane.width / 2.0 for lane in network.near(x, y, 1.0) if lane.id in allowed
+    )
