@@ -82,7 +82,7 @@ class TestsTable:
         for key, text in FAILURE_CLASSES.items():
             a, b = report.classes[key], random.classes[key]
             if a or b:
-                lines.append(f"  {text:<48}{a:>5}{b:>8}")
+                lines.append(f"  {text:<60}{a:>5}{b:>8}")
         return "\n".join(lines) + "\n"
 
     def to_json(self) -> dict[str, Any]:

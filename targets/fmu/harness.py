@@ -113,7 +113,7 @@ def run_test(plan: Plan, ego: str, driver: Driver, world: World) -> Run:
             if hit is not None:
                 ended, contact = "collision", Contact(t, hit)
                 break
-            if s >= task.goal:
+            if s >= task.goal and not task.hold:
                 ended = "goal"
                 break
             if t >= task.budget:

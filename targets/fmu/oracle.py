@@ -25,6 +25,7 @@ from sovarc.targets.verdict import Finding, Verdict
 MOVING = 0.5  # m/s: slower than this, the ego stands still
 TTC_LIMIT = 1.0  # s: a smaller time to collision is a near miss
 HARSH_BRAKING = 5.0  # m/s²: braking harder than this is harsh (about half of g)
+BLOCKED_AHEAD = 20.0  # m: a standing body this close ahead of a stopped ego blocks it
 
 # Failure classes, most serious first (the evaluation's table counts them in this order).
 FAILURE_CLASSES: dict[str, str] = {
@@ -33,6 +34,7 @@ FAILURE_CLASSES: dict[str, str] = {
     "head_on": "collision: head-on",
     "angle": "collision: angle or side",
     "pedestrian": "collision: hit a pedestrian",
+    "stuck": "did not reach its goal: stopped behind a standing vehicle",
     "goal": "did not reach its goal in time",
     "near_miss": f"near miss: time to collision under {TTC_LIMIT:g} s",
     "harsh_braking": f"harsh braking: over {HARSH_BRAKING:g} m/s²",
@@ -61,14 +63,18 @@ def judge(run: Run, plan: Plan, *, seed: int = 0, fmu: str = "", method: str = "
         findings.append(Finding("collision", True, "the ego touched no one"))
         reached = run.ended == "goal"
         end = float(run.times[-1])
-        if reached:
+        if run.task.hold:
+            moved = float(run.progress.max())
+            reached = moved <= run.task.goal
+            message = f"the ego's task was to hold its position (its participant never moved): it moved {moved:.1f} m"
+        elif reached:
             message = f"the ego reached its goal at t = {end:.2f} s (budget {run.task.budget:.1f} s)"
         else:
             short = run.task.goal - float(run.progress[-1])
             message = f"the ego did not reach its goal within {run.task.budget:.1f} s: it stopped {short:.1f} m short"
         findings.append(Finding("goal", reached, message, end))
         facts["goal_time"] = _r(end) if reached else None
-        failure = failure or (None if reached else "goal")
+        failure = failure or (None if reached else ("stuck" if _blocked(run) else "goal"))
 
     ttc, at, other = _min_ttc(run)
     facts["min_ttc"] = None if math.isinf(ttc) else _r(ttc)
@@ -128,6 +134,23 @@ def _contact_kind(run: Run) -> str:
     ex, ey = centre(float(ego.x[-1]), float(ego.y[-1]), float(ego.heading[-1]), ego.body)
     ahead, _ = to_ego_frame(ox, oy, ex, ey, float(ego.heading[-1]))
     return "rear_end" if ahead > 0.0 else "struck_from_behind"
+
+
+def _blocked(run: Run) -> str | None:
+    """The standing body the ego ended up stopped behind (within BLOCKED_AHEAD, in its lane), if any."""
+    ego = run.ego_track
+    if float(ego.speed[-1]) > MOVING:
+        return None
+    x, y, heading = float(ego.x[-1]), float(ego.y[-1]), float(ego.heading[-1])
+    for name in sorted(run.tracks):
+        track = run.tracks[name]
+        if name == run.ego or float(track.speed[-1]) > MOVING:
+            continue
+        cx, cy = centre(float(track.x[-1]), float(track.y[-1]), float(track.heading[-1]), track.body)
+        ahead, left = to_ego_frame(cx, cy, x, y, heading)
+        if 0.0 < ahead < BLOCKED_AHEAD and abs(left) < (ego.body.width + track.body.width) / 2.0 + 0.5:
+            return name
+    return None
 
 
 def _min_ttc(run: Run) -> tuple[float, float | None, str | None]:

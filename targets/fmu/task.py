@@ -5,6 +5,10 @@ trajectory drives, then on along the lane its last edge leads into (straight on 
 goal is `GOAL_MARGIN` past the end of the planned path. The speed the route asks for at arc length s
 is the fastest the participant drove there (a participant that waited does not make the ego wait),
 and never below `MIN_CRUISE`, so that every ego has somewhere to go.
+
+A participant that never moves (a parked car, traffic stopped at a light; its path is shorter than
+HOLD_PATH) gives a task to HOLD: the route points the way it faces, the speed asked for is zero, and
+the goal is to stay within HOLD_RADIUS of the start for the whole budget.
 """
 
 from __future__ import annotations
@@ -20,6 +24,8 @@ from sovarc.targets.fmu.polyline import Point, Polyline
 
 GOAL_MARGIN = 10.0  # m past the planned path's end
 MIN_CRUISE = 3.0  # m/s: the slowest speed a route asks for
+HOLD_PATH = 1.0  # m: a participant whose path is shorter holds its position
+HOLD_RADIUS = 2.0  # m a holding ego may creep
 BUDGET_SLACK = 8.0  # s the ego may take beyond the plan's own time to reach the goal
 MAX_BUDGET = 60.0  # s: no test runs longer
 BIN = 1.0  # m: resolution of the speed profile
@@ -37,9 +43,12 @@ class EgoTask:
     goal: float  # m along the route
     profile: np.ndarray  # m/s asked for in each BIN-metre bin of the planned path
     cruise: float  # m/s asked for past the planned path
-    budget: float  # s to reach the goal
+    budget: float  # s to reach the goal (to hold: the length of the test)
+    hold: bool = False  # the task is to stay put
 
     def target_speed(self, s: float) -> float:
+        if self.hold:
+            return 0.0
         if s >= self.path_end:
             return self.cruise
         k = min(max(int(s / BIN), 0), len(self.profile) - 1)
@@ -62,17 +71,31 @@ def to_ego_frame(px: float, py: float, x: float, y: float, heading: float) -> Po
 def make_task(plan: Plan, participant: str, lane_shapes: LaneShapes | None = None) -> EgoTask:
     trajectory = plan.trajectory(participant)
     samples = trajectory.samples
-    planned = Polyline([(s.x, s.y) for s in samples])
-    towards = _continuation(trajectory, planned, lane_shapes) if lane_shapes else []
+    start = samples[0]
+    if start.speed < 0.0:  # the ego does not reverse: it starts at rest
+        start = Sample(start.t, start.x, start.y, start.heading, 0.0)
     extra = GOAL_MARGIN + PATH_POINTS * PATH_SPACING + 20.0
+    points = _distinct([(s.x, s.y) for s in samples])
+    if len(points) < 2 or Polyline(points).length < HOLD_PATH:
+        rad = math.radians(start.heading)
+        route = Polyline([(start.x, start.y), (start.x + extra * math.sin(rad), start.y + extra * math.cos(rad))])
+        budget = min(MAX_BUDGET, plan.duration + BUDGET_SLACK)
+        return EgoTask(participant, trajectory, start, route, 0.0, HOLD_RADIUS, np.zeros(1), 0.0, budget, hold=True)
+    planned = Polyline(points)
+    towards = _continuation(trajectory, planned, lane_shapes) if lane_shapes else []
     route = planned.extended(extra, towards)
     path_end = planned.length
     profile, cruise = _speed_profile(samples, path_end)
     budget = min(MAX_BUDGET, plan.duration + GOAL_MARGIN / cruise + BUDGET_SLACK)
-    start = samples[0]
-    if start.speed < 0.0:  # the ego does not reverse: it starts at rest
-        start = Sample(start.t, start.x, start.y, start.heading, 0.0)
     return EgoTask(participant, trajectory, start, route, path_end, path_end + GOAL_MARGIN, profile, cruise, budget)
+
+
+def _distinct(points: list[Point]) -> list[Point]:
+    kept: list[Point] = []
+    for p in points:
+        if not kept or math.dist(kept[-1], p) > 0.05:
+            kept.append(p)
+    return kept
 
 
 def _speed_profile(samples: Sequence[Sample], path_end: float) -> tuple[np.ndarray, float]:

@@ -105,6 +105,8 @@ class SovarcEgo(Fmi2Slave):
     def _follow(self, line, seen):
         """IDM towards the wanted speed, behind the nearest object on the path."""
         v = max(self.ego_speed, 0.0)
+        if self.target_speed < 0.1:  # asked to stand still
+            return -min(COMFORT, v / 0.05) if v > 0.0 else 0.0
         wanted = max(min(self.target_speed, math.sqrt(LATERAL / max(line.curvature(40.0), 1e-6))), 1.0)
         free = 1.0 - (v / wanted) ** 4
         leader = None
