@@ -130,3 +130,10 @@ def crossing(duration: float = 7.0) -> Plan:
         kind=RoadKind.INTERSECTION,
         impact=replace(plan.impact, point=(398.3, -4.9), type=CrashType.SIDE),
     )
+
+
+def stopped_ahead(duration: float = 10.0) -> Plan:
+    """V2 stands at x = 80 in lane 2; V1 comes at 12 m/s and brakes to a stop 7 m behind it."""
+    standing = eastbound("V2", 80.0, 1, lambda t: 0.0, duration)
+    braking = eastbound("V1", 20.0, 1, lambda t: max(0.0, 12.0 - 1.5 * t), duration)
+    return plan_of(braking, standing)

@@ -10,7 +10,7 @@ import pytest
 from sovarc.targets.fmu import EgoFmu, FmuInterfaceError, run_target, run_test_results, run_tests
 
 from tests.targets.fmu.fake_fmu import write_fmu
-from tests.targets.fmu.plans import car_following, crossing, cut_in
+from tests.targets.fmu.plans import car_following, crossing, cut_in, stopped_ahead
 
 pytestmark = pytest.mark.slow  # runs SUMO and an FMU
 
@@ -74,3 +74,14 @@ def test_a_mismatched_fmu_is_refused_before_anything_runs(tmp_path: Path) -> Non
     bad = write_fmu(tmp_path / "bad.fmu", drop=("steer",))
     with pytest.raises(FmuInterfaceError, match="steer"):
         run_tests(car_following(), bad)
+
+
+def test_a_participant_that_never_moved_holds_and_one_behind_it_is_stuck(reference: EgoFmu) -> None:
+    verdicts = _by_ego(run_tests(stopped_ahead(), reference))
+    holder = verdicts["V2"]
+    assert holder.passed, holder.dumps()
+    goal = next(f for f in holder.findings if f.check == "goal")
+    assert "hold its position" in goal.message and holder.facts["max_speed"] == 0.0
+    follower = verdicts["V1"]
+    assert follower.facts["failure"] == "stuck"  # it stopped safely, but the reference ego never overtakes
+    assert next(f for f in follower.findings if f.check == "collision").passed
