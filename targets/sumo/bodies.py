@@ -82,7 +82,7 @@ def overlap(a: Body, b: Body) -> bool:
         for axis in body.axes:
             ra = [p[0] * axis[0] + p[1] * axis[1] for p in pa]
             rb = [p[0] * axis[0] + p[1] * axis[1] for p in pb]
-            if max(ra) <= min(rb) or max(rb) <= min(ra):
+            if max(ra) <= min(rb) + 1e-9 or max(rb) <= min(ra) + 1e-9:  # touching is not overlapping
                 return False
     return True
 

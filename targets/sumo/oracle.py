@@ -60,7 +60,7 @@ def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
     until = contact.time if contact else trace.times[-1]
     findings = [
         _replay_finding(plan, trace),
-        _collision_finding(plan, trace, crashes),
+        _collision_finding(plan, trace, crashes, unconfirmed),
         _pair_finding(crashes, striker, victim),
         _angle_finding(plan, contact),
         _lanes_finding(plan, trace, network, until),
@@ -162,7 +162,9 @@ def _replay_finding(plan: Plan, trace: Trace) -> Finding:
     return Finding("replay", True, "every participant follows its trajectory in SUMO at every step")
 
 
-def _collision_finding(plan: Plan, trace: Trace, crashes: Sequence[Crash]) -> Finding:
+def _collision_finding(
+    plan: Plan, trace: Trace, crashes: Sequence[Crash], unconfirmed: Sequence[tuple[str, str]]
+) -> Finding:
     if crashes:
         c = crashes[0]
         a, b = c.pair
@@ -173,6 +175,8 @@ def _collision_finding(plan: Plan, trace: Trace, crashes: Sequence[Crash]) -> Fi
     gap, time = _closest_approach(plan, trace)
     striker, victim = plan.impact.striker, plan.impact.victim
     message = f"no collision: {striker} and {victim} come no closer than {gap:.2f} m (at t={time:.2f} s)"
+    if tuple(sorted((striker, victim))) in unconfirmed:
+        message += "; SUMO reports one, but its bodies never touch (its lane model misplaces wrong-way bodies)"
     return Finding("collision", False, message, time)
 
 

@@ -308,3 +308,14 @@ BROKEN: dict[str, Callable[[], Plan]] = {
     "wrong_angle": wrong_angle,
     "lane_crossing": lane_crossing,
 }
+
+
+def wrong_way_near_miss() -> Plan:
+    """Both stopped on south1_0, fronts 3 m apart, V1 the wrong way: SUMO's lane check takes V1's
+    body to lie behind its front along the lane, over V2, and reports a collision that is not one."""
+    plan = head_on()
+    wrong_way = shape_of(("south1_0",), reverse=True)
+    meet = pose(shape_of(("south1_0",)), 200.0)[:2]
+    v1 = drive("V1", Role.VEHICLE, ("-south1_0",), 0.0, s_of(wrong_way, meet) - 3.0, shape=wrong_way)
+    v1 = replace(v1, lanes=("-south1_0", "south1_0"))
+    return with_trajectory(with_trajectory(plan, v1), drive("V2", Role.VEHICLE, ("south1_0",), 0.0, 200.0))

@@ -8,7 +8,7 @@ import pytest
 from sovarc.dsl.errors import OracleError
 from sovarc.targets.sumo import check, emit
 
-from tests.targets.sumo.plans import BROKEN, SCENES
+from tests.targets.sumo.plans import BROKEN, SCENES, wrong_way_near_miss
 
 pytestmark = pytest.mark.slow
 
@@ -83,3 +83,12 @@ def test_verdict_json_names_reasons_and_times() -> None:
     pair = data["findings"][3]
     assert (pair["check"], pair["passed"], pair["time"]) == ("pair", False, 1.7)
     assert pair["message"] == "V1 and V3 collide first, before striker V1 and victim V2"
+
+
+def test_a_sumo_report_without_contact_is_not_a_collision() -> None:
+    verdict = check(wrong_way_near_miss())
+    assert verdict.facts["sumo_collisions_without_contact"] == [["V1", "V2"]]
+    collision = verdict.findings[2]
+    assert (collision.check, collision.passed) == ("collision", False)
+    assert collision.message.startswith("no collision: V1 and V2 come no closer than 3.00 m")
+    assert "SUMO reports one, but its bodies never touch" in collision.message

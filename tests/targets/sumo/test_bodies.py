@@ -1,0 +1,68 @@
+"""Bodies, contacts and lane look-ups of the SUMO oracle, on plain geometry."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.targets.sumo.bodies import Body, first_touch, overlap
+from sovarc.targets.sumo.network import read_network
+
+from tests.targets.sumo.plans import TOWN
+
+
+def car(x: float, y: float, heading: float) -> Body:
+    return Body(x, y, heading, 4.6, 1.8, front_ref=True)
+
+
+def test_front_reference_puts_the_body_behind_the_point() -> None:
+    assert car(0.0, 0.0, 90.0).centre == pytest.approx((-2.3, 0.0))
+    assert Body(0.0, 0.0, 90.0, 0.5, 0.6, front_ref=False).centre == (0.0, 0.0)
+
+
+def test_overlap_needs_shared_area() -> None:
+    assert overlap(car(0.0, 0.0, 90.0), car(4.0, 0.0, 90.0))
+    assert not overlap(car(0.0, 0.0, 90.0), car(4.6, 0.0, 90.0))  # bumpers touching
+    assert not overlap(car(0.0, 0.0, 90.0), car(0.0, 1.8, 90.0))  # side by side
+
+
+@pytest.mark.parametrize(
+    ("striker_end", "victim_end", "faces", "angle"),
+    [
+        # rear-end: striker's front reaches the back of a stopped car ahead
+        (car(1.0, 0.0, 90.0), car(5.0, 0.0, 90.0), (("front",), ("rear",)), 0.0),
+        # head-on: fronts meet
+        (car(1.0, 0.0, 90.0), car(0.0, 0.0, 270.0), (("front",), ("front",)), 180.0),
+        # T-bone: northbound front into the middle of an eastbound car's right side
+        (car(0.0, 0.5, 0.0), car(2.3, 0.0, 90.0), (("front",), ("right",)), 90.0),
+    ],
+)
+def test_first_touch_names_faces_and_angle(
+    striker_end: Body, victim_end: Body, faces: tuple[tuple[str, ...], tuple[str, ...]], angle: float
+) -> None:
+    back = {0.0: (0.0, -3.0), 90.0: (-3.0, 0.0), 270.0: (3.0, 0.0)}
+    dx, dy = back[striker_end.heading]
+    striker_start = car(striker_end.x + dx, striker_end.y + dy, striker_end.heading)
+    contact = first_touch(0.0, 1.0, (striker_start, striker_end), (victim_end, victim_end))
+    assert contact.zones == faces
+    assert contact.angle == pytest.approx(angle)
+    assert 0.0 < contact.time < 1.0
+
+
+def test_a_corner_hit_names_both_faces_of_the_corner() -> None:
+    # a car drifting left at 10 degrees: its front-left corner reaches the side of the car beside it
+    victim = car(12.0, 2.0, 90.0)
+    striker_end = car(10.65, 0.30, 80.0)
+    striker_start = car(7.69, -0.22, 80.0)
+    contact = first_touch(0.0, 1.0, (striker_start, striker_end), (victim, victim))
+    assert contact.zones == (("front", "left"), ("right",))
+
+
+def test_locate_prefers_the_participants_own_junction_lane() -> None:
+    network = read_network(TOWN)
+    # inside x_oak, where the northbound straight lane crosses the eastbound lane 2
+    point = (401.7, -5.9)
+    own = network.locate(*point, 0.0, frozenset({":x_oak_12_0"}))
+    assert own.lane.id == ":x_oak_12_0"
+    assert network.locate(*point, 90.0, frozenset({":x_oak_16_1"})).lane.id == ":x_oak_16_1"
+    assert network.locate(4.5, -150.0, 0.0, frozenset()).lane.id == "main1_1"  # a car
+    assert network.locate(7.0, -150.0, 0.0, frozenset()).lane.id == "main1_1"  # never on the sidewalk
+    assert network.locate(7.0, -150.0, 0.0, frozenset(), pedestrian=True).lane.id == "main1_0"
