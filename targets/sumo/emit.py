@@ -7,12 +7,18 @@
       scenario.fcd.xml   the trajectories, one <timestep> per plan step
       scenario.sumocfg   step length = plan.step, collision detection on (junctions too)
 
-The trajectories are replayed by SUMO's own `fcd-replay` device (SUMO >= 1.20): the
-configuration names the FCD file, SUMO builds each participant from it and moves it onto
-its recorded position every step (moveToXY). So `sumo -c scenario.sumocfg` (or
-`sumo-gui -c ...`) shows the crash and writes it to `collisions.xml` with no driver or
-TraCI script at all. The oracle (`check`) runs exactly this configuration through libsumo
-and only observes. The same bytes come out for the same plan and map.
+What needs a driver and what does not:
+- Nothing, to see the crash. The trajectories are replayed by SUMO's own `fcd-replay`
+  device (as in the SUMO the project installs, 1.28): the configuration names the FCD file,
+  SUMO builds each participant from it and moves it onto its recorded position every step
+  (moveToXY with the recorded lane). `sumo -c scenario.sumocfg` (or `sumo-gui -c ...`)
+  shows the crash and writes it to `collisions.xml`, with no TraCI script at all.
+- The oracle (`check`) replays from Python instead (replay.py): same options, same FCD
+  trajectories, moveToXY each step through libsumo. The device keeps static state in the
+  SUMO library, so a second simulation in one process would replay nothing; the tests
+  check that both replays see the same collision.
+
+The same plan and map give the same bytes.
 """
 
 from __future__ import annotations
