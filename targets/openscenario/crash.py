@@ -1,6 +1,11 @@
 """Crash findings: the encoded trajectories reach the collision area C_A together, the striker
-and the victim first touch at the declared impact time, at the angle and on the faces the crash
-type names, and no other pair of bodies collides before it."""
+and the victim first touch at the declared impact time (within CONTACT_TIME_TOL), their boxes
+then overlap, at the first touch the angle and the faces are those the crash type names, and no
+other pair of bodies collides before it.
+
+Angles and faces follow the SUMO oracle, so that the two targets agree: rear_end = striker front
+into victim rear, headings within 45 degrees; frontal = front into front, headings at least 135
+degrees apart; side = striker front into a side of the victim (the faces decide, not the angle)."""
 
 from __future__ import annotations
 
@@ -13,7 +18,7 @@ from sovarc.targets.openscenario.kinematics import (
     Polygon,
     angle_diff,
     contact_point,
-    face_of,
+    faces_at,
     footprint,
     gap,
     overlap,
@@ -24,13 +29,12 @@ from sovarc.targets.openscenario.readback import Entity, Pose, ScenarioFile
 from sovarc.targets.verdict import Finding
 
 AREA_TOL = 0.1  # m beyond C_A's radius
-TOUCH_GAP = 0.25  # m: at the impact time the bodies are at most this far apart
 CONTACT_TIME_TOL = 0.3  # s between the declared impact and the first contact
 SCAN_STEP = 0.02  # s
-OVERLAP_WINDOW = 1.0  # s after the impact in which the bodies must overlap (players detect the crash)
+OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap (players detect the crash)
 
 # Relative heading (degrees, 0..180) allowed per crash type, and the victim faces it names.
-ANGLES: dict[str, tuple[float, float]] = {"rear_end": (0.0, 60.0), "frontal": (120.0, 180.0), "side": (20.0, 160.0)}
+ANGLES: dict[str, tuple[float, float]] = {"rear_end": (0.0, 45.0), "frontal": (135.0, 180.0), "side": (0.0, 180.0)}
 VICTIM_FACES: dict[str, frozenset[str]] = {
     "rear_end": frozenset({"rear"}),
     "frontal": frozenset({"front"}),
@@ -79,8 +83,10 @@ def crash_findings(
 ) -> tuple[list[Finding], dict[str, object]]:
     scene = Scene(scenario, paths)
     facts: dict[str, object] = {}
-    findings = [_area(scene, crash), *_contact(scene, crash, facts), _overlap(scene, crash)]
-    findings.extend(_angle_and_faces(scene, crash, facts))
+    contact, first = _contact(scene, crash, facts)
+    touch = crash.time if first is None or not contact.passed else first  # where angle and faces are judged
+    findings = [_area(scene, crash), contact, _overlap(scene, crash, touch)]
+    findings.extend(_angle_and_faces(scene, crash, touch, facts))
     findings.extend(_other_contacts(scene, crash))
     return findings, facts
 
@@ -97,37 +103,32 @@ def _area(scene: Scene, crash: Crash) -> Finding:
     return Finding("collision_area", True, message, crash.time)
 
 
-def _contact(scene: Scene, crash: Crash, facts: dict[str, object]) -> Iterator[Finding]:
+def _contact(scene: Scene, crash: Crash, facts: dict[str, object]) -> tuple[Finding, float | None]:
+    """The first-contact finding and the time of the first touch (None: never)."""
     a, b = crash.striker, crash.victim
     first = next((t for t in _times(0.0, scene.end(a, b)) if gap(scene.box(a, t), scene.box(b, t)) <= 0.01), None)
-    distance = gap(scene.box(a, crash.time), scene.box(b, crash.time))
     facts["first_contact_time"] = None if first is None else round(first, 3)
-    facts["gap_at_impact"] = round(distance, 3)
     if first is None:
-        yield Finding("first_contact", False, f"{a} and {b} never touch")
-    elif abs(first - crash.time) > CONTACT_TIME_TOL:
+        return Finding("first_contact", False, f"{a} and {b} never touch"), None
+    if abs(first - crash.time) > CONTACT_TIME_TOL:
         message = f"{a} and {b} first touch at t={first:.2f} s, not at the impact t={crash.time:g} s"
-        yield Finding("first_contact", False, message, first)
-    elif distance > TOUCH_GAP:
-        apart = f"{distance:.2f} m" if distance <= 1.0 else "more than 1 m"
-        message = f"at the impact t={crash.time:g} s {a} and {b} are {apart} apart"
-        yield Finding("first_contact", False, message, crash.time)
-    else:
-        yield Finding("first_contact", True, f"{a} and {b} first touch at t={first:.2f} s", first)
+        return Finding("first_contact", False, message, first), first
+    message = f"{a} and {b} first touch at t={first:.2f} s (impact planned at {crash.time:g} s)"
+    return Finding("first_contact", True, message, first), first
 
 
-def _overlap(scene: Scene, crash: Crash) -> Finding:
+def _overlap(scene: Scene, crash: Crash, touch: float) -> Finding:
     a, b = crash.striker, crash.victim
-    window = _times(crash.time, min(scene.end(a, b), crash.time + OVERLAP_WINDOW))
+    window = _times(touch, min(scene.end(a, b), touch + OVERLAP_WINDOW))
     hit = next((t for t in window if overlap(scene.box(a, t), scene.box(b, t))), None)
     if hit is None:
         message = f"the bounding boxes of {a} and {b} never overlap after the impact: a player sees no collision"
-        return Finding("overlap", False, message, crash.time)
+        return Finding("overlap", False, message, touch)
     return Finding("overlap", True, f"the bounding boxes overlap from t={hit:.2f} s", hit)
 
 
-def _angle_and_faces(scene: Scene, crash: Crash, facts: dict[str, object]) -> Iterator[Finding]:
-    s_pose, v_pose = scene.pose(crash.striker, crash.time), scene.pose(crash.victim, crash.time)
+def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, object]) -> Iterator[Finding]:
+    s_pose, v_pose = scene.pose(crash.striker, touch), scene.pose(crash.victim, touch)
     relative = abs(math.degrees(angle_diff(s_pose.h, v_pose.h)))
     facts["relative_heading"] = round(relative, 1)
     if crash.type not in ANGLES:
@@ -136,27 +137,36 @@ def _angle_and_faces(scene: Scene, crash: Crash, facts: dict[str, object]) -> It
     lo, hi = ANGLES[crash.type]
     if lo <= relative <= hi:
         message = f"{relative:.0f}° between the headings fits a {crash.type} crash"
-        yield Finding("impact_angle", True, message, crash.time)
+        yield Finding("impact_angle", True, message, touch)
     else:
         message = f"{relative:.0f}° between the headings at impact; a {crash.type} crash needs {lo:g}° to {hi:g}°"
-        yield Finding("impact_angle", False, message, crash.time)
+        yield Finding("impact_angle", False, message, touch)
 
-    point = contact_point(scene.box(crash.striker, crash.time), scene.box(crash.victim, crash.time))
+    point = contact_point(scene.box(crash.striker, touch), scene.box(crash.victim, touch))
     striker, victim = scene.entity(crash.striker), scene.entity(crash.victim)
-    s_face = None if striker.pedestrian else face_of(striker, s_pose, point)
-    v_face = None if victim.pedestrian else face_of(victim, v_pose, point)
-    facts["striker_face"], facts["victim_face"] = s_face, v_face
+    s_faces = None if striker.pedestrian else faces_at(striker, s_pose, point)
+    v_faces = None if victim.pedestrian else faces_at(victim, v_pose, point)
+    facts["striker_face"] = None if s_faces is None else "-".join(s_faces)
+    facts["victim_face"] = None if v_faces is None else "-".join(v_faces)
     problems = []
-    if s_face is not None and s_face != "front":
-        problems.append(f"the striker {crash.striker} hits with its {s_face}, not its front")
+    if s_faces is not None and "front" not in s_faces:
+        problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its front")
     wanted = VICTIM_FACES[crash.type]
-    if v_face is not None and v_face not in wanted:
-        problems.append(f"the victim {crash.victim} is hit on its {v_face}, not its {' or '.join(sorted(wanted))}")
+    if v_faces is not None and not wanted.intersection(v_faces):
+        problems.append(
+            f"the victim {crash.victim} is hit on its {_words(v_faces)}, not its {' or '.join(sorted(wanted))}"
+        )
     if problems:
-        yield Finding("impact_faces", False, "; ".join(problems), crash.time)
+        yield Finding("impact_faces", False, "; ".join(problems), touch)
     else:
-        faces = f"{s_face or 'body'} of {crash.striker} into {v_face or 'body'} of {crash.victim}"
-        yield Finding("impact_faces", True, f"{faces}, as a {crash.type} crash", crash.time)
+        faces = f"{_words(s_faces)} of {crash.striker} into {_words(v_faces)} of {crash.victim}"
+        yield Finding("impact_faces", True, f"{faces}, as a {crash.type} crash", touch)
+
+
+def _words(faces: tuple[str, ...] | None) -> str:
+    if faces is None:
+        return "body"
+    return f"{faces[0]}-{faces[1]} corner" if len(faces) == 2 else faces[0]
 
 
 def _other_contacts(scene: Scene, crash: Crash) -> Iterator[Finding]:

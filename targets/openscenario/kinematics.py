@@ -36,6 +36,16 @@ def pose_at(poses: Sequence[Pose], t: float) -> Pose:
     return Pose(t, a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.h + u * angle_diff(a.h, b.h)) % TAU)
 
 
+def driven_point(entity: Entity, pose: Pose) -> Point:
+    """The point whose path synthesis timed: a vehicle's front-bumper centre, a pedestrian's centre.
+
+    In a turn the reference point (rear axle) of a rigid body swings sideways as the heading
+    turns, so its speed is not the speed the vehicle was planned and limited at."""
+    c, s = math.cos(pose.h), math.sin(pose.h)
+    ahead = entity.center_x + (0.0 if entity.pedestrian else entity.length / 2)
+    return pose.x + c * ahead - s * entity.center_y, pose.y + s * ahead + c * entity.center_y
+
+
 def footprint(entity: Entity, pose: Pose) -> Polygon:
     """The bounding box's corners on the ground, counter-clockwise."""
     c, s = math.cos(pose.h), math.sin(pose.h)
@@ -136,32 +146,56 @@ def _clip(subject: list[Point], a: Point, b: Point) -> list[Point]:
     return out
 
 
+def _area_centroid(region: list[Point]) -> tuple[float, Point]:
+    """(area, centroid) of a simple polygon."""
+    area = cx = cy = 0.0
+    for (x1, y1), (x2, y2) in _edges(tuple(region)):
+        cross = x1 * y2 - x2 * y1
+        area += cross
+        cx += (x1 + x2) * cross
+        cy += (y1 + y2) * cross
+    if abs(area) < 1e-12:
+        return 0.0, region[0]
+    return abs(area) / 2, (cx / (3 * area), cy / (3 * area))
+
+
+CONTACT_AREA = 1e-3  # m²: less overlap than this is a touch, judged by the closest points
+
+
 def contact_point(a: Polygon, b: Polygon) -> Point:
-    """Where two bodies meet: the centre of their overlap, or the midpoint of their closest points."""
+    """Where two bodies meet: the centre of their overlap, or (when they just touch) the middle of
+    the stretch along which they are closest."""
     region = list(a)
     for edge in _edges(b):
         region = _clip(region, *edge)
         if not region:
             break
     if len(region) >= 3:
-        return (sum(p[0] for p in region) / len(region), sum(p[1] for p in region) / len(region))
-    best: tuple[float, Point, Point] | None = None
+        area, centre = _area_centroid(region)
+        if area > CONTACT_AREA:
+            return centre
+    pairs = []  # (distance, vertex, its closest point on the other polygon)
     for p, poly in [(p, b) for p in a] + [(p, a) for p in b]:
         for e in _edges(poly):
             d, q = _point_segment(p, *e)
-            if best is None or d < best[0]:
-                best = (d, p, q)
-    assert best is not None
-    return ((best[1][0] + best[2][0]) / 2, (best[1][1] + best[2][1]) / 2)
+            pairs.append((d, p, q))
+    nearest = min(d for d, _, _ in pairs)
+    # Faces that lie parallel touch along a stretch: take its middle, not one of its ends.
+    mids = [((p[0] + q[0]) / 2, (p[1] + q[1]) / 2) for d, p, q in pairs if d <= nearest + 0.02]
+    return (sum(m[0] for m in mids) / len(mids), sum(m[1] for m in mids) / len(mids))
 
 
-def face_of(entity: Entity, pose: Pose, point: Point) -> str:
-    """Which face of the body a point is on (or nearest): front, rear, left or right."""
+def faces_at(entity: Entity, pose: Pose, point: Point) -> tuple[str, ...]:
+    """The faces of the body a point is on: the nearest one first, then the adjacent face when the
+    point is near that corner (beyond a quarter of the length or width from the centre), as the
+    SUMO oracle counts them, so that both targets judge a corner hit alike."""
     c, s = math.cos(pose.h), math.sin(pose.h)
     dx, dy = point[0] - pose.x, point[1] - pose.y
     u = c * dx + s * dy - entity.center_x  # along the body, from its centre
     v = -s * dx + c * dy - entity.center_y  # to the left
     nu, nv = u / (entity.length / 2), v / (entity.width / 2)
+    end = "front" if nu >= 0 else "rear"
+    side = "left" if nv >= 0 else "right"
     if abs(nu) >= abs(nv):
-        return "front" if nu >= 0 else "rear"
-    return "left" if nv >= 0 else "right"
+        return (end, side) if abs(nv) >= 0.5 else (end,)
+    return (side, end) if abs(nu) >= 0.5 else (side,)

@@ -2,7 +2,8 @@
 
 - teleports: each entity is placed once, in Init, where its trajectory starts; none later.
 - timing: vertex times rise strictly.
-- speed, acceleration: implied by positions and times, within each entity's limits.
+- speed, acceleration: implied by positions and times, within each entity's limits; measured at
+  the point the plan drives along (a vehicle's front-bumper centre, from the pose and the box).
 """
 
 from __future__ import annotations
@@ -11,7 +12,8 @@ import itertools
 import math
 from collections.abc import Iterator
 
-from sovarc.targets.openscenario.readback import Pose, ScenarioFile
+from sovarc.targets.openscenario.kinematics import driven_point
+from sovarc.targets.openscenario.readback import Entity, Pose, ScenarioFile
 from sovarc.targets.verdict import Finding
 
 START_POSITION_TOL = 0.05  # m between the Init teleport and the trajectory's first vertex
@@ -79,11 +81,12 @@ def timing_findings(paths: dict[str, tuple[Pose, ...]]) -> Iterator[Finding]:
         yield Finding("timing", True, "vertex times rise strictly along every trajectory")
 
 
-def _speeds(path: tuple[Pose, ...]) -> list[tuple[float, float, float]]:
-    """(mid time, speed, duration) of each step between vertices."""
+def _speeds(entity: Entity, path: tuple[Pose, ...]) -> list[tuple[float, float, float]]:
+    """(mid time, speed, duration) of each step between vertices, at the point the vehicle drives along."""
+    points = [driven_point(entity, pose) for pose in path]
     return [
-        ((a.t + b.t) / 2, math.hypot(b.x - a.x, b.y - a.y) / (b.t - a.t), b.t - a.t)
-        for a, b in itertools.pairwise(path)
+        ((a.t + b.t) / 2, math.dist(p, q) / (b.t - a.t), b.t - a.t)
+        for (a, p), (b, q) in itertools.pairwise(zip(path, points, strict=True))
         if b.t > a.t
     ]
 
@@ -95,7 +98,7 @@ def speed_findings(
     peaks: dict[str, float] = {}
     for name, path in paths.items():
         entity = scenario.entities[name]
-        steps = _speeds(path)
+        steps = _speeds(entity, path)
         if not steps:
             continue
         t_peak, peak, _ = max(steps, key=lambda s: s[1])

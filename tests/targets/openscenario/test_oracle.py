@@ -133,7 +133,7 @@ def test_an_init_position_away_from_the_trajectory_is_a_jump(emitted: Emitter, t
 
 def test_the_wrong_crash_type_fails_angle_and_faces(emitted: Emitter, tmp_path: Path) -> None:
     reasons = failed(mutated(emitted, tmp_path, "t_bone", lambda r: _param(r, "sovarc_crash_type", "rear_end")))
-    assert reasons["impact_angle"] == "90° between the headings at impact; a rear_end crash needs 0° to 60°"
+    assert reasons["impact_angle"] == "90° between the headings at impact; a rear_end crash needs 0° to 45°"
     assert reasons["impact_faces"] == "the victim V2 is hit on its right, not its rear"
 
 
