@@ -1,7 +1,8 @@
 """One test: a participant of a plan becomes the ego, driven by the FMU; the others replay their trajectories.
 
 Each step of STEP seconds at time t:
-1. read every actor's pose back from SUMO (the ground truth);
+1. read every actor's pose back from SUMO (the ground truth); speeds are the bicycle model's for the
+   ego and the replayed trajectory's for an NPC (SUMO's own speed of a moved vehicle is not exact);
 2. stop at the first contact between the ego and another body, or when the ego reaches its goal,
    or when its time budget is spent;
 3. give the FMU the ego's state, its route ahead and the objects it can see; step it;

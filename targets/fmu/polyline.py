@@ -79,7 +79,3 @@ class Polyline:
         rad = math.radians(heading)
         points.append((end[0] + extra * math.sin(rad), end[1] + extra * math.cos(rad)))
         return Polyline(points)
-
-    def resampled(self, spacing: float) -> list[Point]:
-        n = max(math.ceil(self.length / spacing), 1)
-        return [tuple(p) for p in self.points_at(np.linspace(0.0, self.length, n + 1))]
