@@ -40,6 +40,7 @@ _NETCONVERT_HEADER = re.compile(rb"<!--\s*generated on.*?-->\s*", re.DOTALL)
 
 def emit(plan: Plan, out_dir: str | os.PathLike[str]) -> Path:
     """Write the scenario folder for `plan` into `out_dir` (created if needed); returns the .sumocfg."""
+    _check_sampling(plan)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     net_file = copy_network(plan, out)
@@ -53,6 +54,20 @@ def emit(plan: Plan, out_dir: str | os.PathLike[str]) -> Path:
     for name, text in files.items():
         (out / name).write_text(text, encoding="utf-8", newline="\n")
     return out / documents.CONFIG
+
+
+def _check_sampling(plan: Plan) -> None:
+    """Every trajectory sampled at the same times, from 0 at the plan's step (the plan's contract)."""
+    if not plan.trajectories:
+        raise UnsupportedError(f"plan of {plan.scenario.name} on {plan.site} has no trajectories")
+    times = [s.t for s in plan.trajectories[0].samples]
+    for t in plan.trajectories:
+        mine = [s.t for s in t.samples]
+        if len(mine) != len(times) or any(abs(a - b) > 1e-6 for a, b in zip(mine, times, strict=True)):
+            first = plan.trajectories[0].participant
+            raise UnsupportedError(f"{t.participant} is not sampled at the same times as {first}")
+    if any(abs(t - k * plan.step) > 1e-6 for k, t in enumerate(times)):
+        raise UnsupportedError(f"samples are not {plan.step} s apart from t = 0")
 
 
 def copy_network(plan: Plan, out: Path) -> Path:

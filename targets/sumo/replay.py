@@ -174,15 +174,22 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
     for v in vehicles:
         first = tracks[v][0]
         edges = list(dict.fromkeys(_edge(e.where) for e in tracks[v] if not e.where.startswith(":")))
-        libsumo.route.add(f"{v}.replay", edges or [_edge(first.where)])
         lane = first.where.rsplit("_", 1)[1]
-        libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
+        try:
+            libsumo.route.add(f"{v}.replay", edges or [_edge(first.where)])
+            libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
+        except libsumo.TraCIException:  # edges SUMO cannot route along: moveToXY (keepRoute=2) re-routes anyway
+            libsumo.route.add(f"{v}.start", [_edge(first.where)])
+            libsumo.vehicle.add(v, f"{v}.start", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
         libsumo.vehicle.setSpeedMode(v, 0)
     for p in people:
         first = tracks[p][0]
         edges = list(dict.fromkeys(e.where for e in tracks[p]))
         libsumo.person.add(p, first.where, first.pos, depart=0.0, typeID=first.type)
-        libsumo.person.appendWalkingStage(p, edges, -1)
+        try:
+            libsumo.person.appendWalkingStage(p, edges, -1)
+        except libsumo.TraCIException:  # not a walkable route: moveToXY places the person anyway
+            libsumo.person.appendWalkingStage(p, [first.where], -1)
     version = libsumo.getVersion()[1]
     times: list[float] = []
     poses: dict[str, list[Pose | None]] = {p: [] for p in (*vehicles, *people)}

@@ -7,7 +7,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
-from sovarc.dsl.errors import InputError
+from sovarc.dsl.errors import InputError, UnsupportedError
 from sovarc.targets.sumo import emit
 from sovarc.targets.sumo.schemas import validate, validate_folder
 
@@ -100,4 +100,13 @@ def test_vehicle_ending_in_a_junction_names_the_lane_it_enters_after_the_run(tmp
 def test_a_changed_map_is_refused(tmp_path: Path) -> None:
     plan = dataclasses.replace(SCENES["t_bone"](), map_sha256="0" * 64)
     with pytest.raises(InputError, match="map file changed since the plan was made"):
+        emit(plan, tmp_path)
+
+
+def test_trajectories_sampled_at_different_times_are_refused(tmp_path: Path) -> None:
+    plan = SCENES["rear_end"]()
+    v1 = plan.trajectory("V1")
+    short = dataclasses.replace(v1, samples=v1.samples[:-1])
+    plan = dataclasses.replace(plan, trajectories=(short, plan.trajectory("V2")))
+    with pytest.raises(UnsupportedError, match="V2 is not sampled at the same times as V1"):
         emit(plan, tmp_path)
