@@ -10,7 +10,7 @@ and victim can meet (contact.py), and solve starts, stops, speeds and the impact
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.lower.contact import Contact, contacts, describe
@@ -58,13 +58,23 @@ def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: lis
     notes = list(notes) + list(match.clamped)
     limit, limit_fact = _limit(scenario, notes)
     routes = _routes(scenario, match, road_map, limit, crash.striker, crash.victim)
-    for route in routes.values():
-        notes += route.notes
-    facts = _facts(scenario, routes, limit, limit_fact)
     striker, victim = routes[crash.striker], routes[crash.victim]
     found = contacts(striker, victim, crash.type)
     if not found:
+        # The lanes the turns enter are the least certain facts of a report: let the turns
+        # enter the lane they come from, and say so, before giving up.
+        loose = _without_turn_lanes(scenario, (crash.striker, crash.victim))
+        if loose is not scenario:
+            loose_routes = _routes(loose, match, road_map, limit, crash.striker, crash.victim)
+            found = contacts(loose_routes[crash.striker], loose_routes[crash.victim], crash.type)
+            if found:
+                routes = loose_routes
+                notes.append("the turns' target lanes keep the pair apart on this site: they enter their own lanes")
+    if not found:
         raise UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
+    for route in routes.values():
+        notes += route.notes
+    facts = _facts(scenario, routes, limit, limit_fact)
     problem_of = lambda c: Problem(  # noqa: E731
         routes=routes,
         striker=crash.striker,
@@ -90,6 +100,19 @@ def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: lis
         )
     assert first_failure is not None
     raise UnsatError(_conflict(scenario, match, first_failure.facts))
+
+
+def _without_turn_lanes(scenario: Scenario, ids: tuple[str, ...]) -> Scenario:
+    """The scenario with the `to` lanes of the given participants' junction moves dropped."""
+    changed = False
+    participants = []
+    for p in scenario.participants:
+        if p.id in ids and any(a.kind in JUNCTION_MOVES and a.to is not None for a in p.known_actions):
+            actions = tuple(replace(a, to=None) if a.kind in JUNCTION_MOVES else a for a in p.known_actions)
+            p = replace(p, actions=actions)
+            changed = True
+        participants.append(p)
+    return replace(scenario, participants=tuple(participants)) if changed else scenario
 
 
 def _limit(scenario: Scenario, notes: list[str]) -> tuple[float, Fact]:

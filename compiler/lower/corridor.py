@@ -101,6 +101,13 @@ class Drive:
             self._use((self.corridor.other if self.against else self.corridor.own)[n - 1])
         return self._blend(index, at, self._target(number, self.against))
 
+    def shift_to(self, number: int) -> None:
+        """Change to lane `number` just before the end of the road (to reach a junction connection)."""
+        target = self._target(number, False)
+        end = self.line.length - 3.0
+        start = max(0.0, end - change_length(self.speed))
+        self.line = blend(self.line, target, start, end)
+
     def retrograde(self, index: int, at: float) -> float:
         """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line."""
         lanes = self.corridor.own if self.against else self.corridor.other

@@ -16,7 +16,7 @@ from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.plan import Body
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
-LATERAL_ACCEL = 3.0  # m/s^2: the most a turn may ask (a comfortable limit; the caps speeds in curves)
+LATERAL_ACCEL = 2.5  # m/s^2: the most a turn may ask (comfortable; it caps speeds in curves)
 LEAD = 20.0  # m: the least a participant drives before its first action, so that it is seen moving
 CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change
@@ -47,19 +47,21 @@ class Route:
     start_hi: float  # latest place to start (when it starts moving); it may start anywhere from 0
     starts_at_rest: bool = False  # its first action is a stop (or it waits in a driveway)
     notes: list[str] = field(default_factory=list)
-    caps: np.ndarray | None = None  # speed cap (m/s) at each vertex of the line, from its curvature
+    caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line
 
     def cap_between(self, a: float, b: float) -> float:
         """The lowest curvature speed cap over [a, b]."""
-        caps = self.speed_caps()
-        inside = (self.line.s >= a - 3.0) & (self.line.s <= b + 3.0)
-        return float(caps[inside].min()) if inside.any() else float(np.interp(a, self.line.s, caps))
+        at, caps = self.speed_caps()
+        inside = (at >= a - 3.0) & (at <= b + 3.0)
+        return float(caps[inside].min()) if inside.any() else float(np.interp(a, at, caps))
 
-    def speed_caps(self) -> np.ndarray:
+    def speed_caps(self) -> tuple[np.ndarray, np.ndarray]:
+        """(arc lengths, speed cap at each): measured on the line as synthesis smooths it."""
         if self.caps is None:
-            radii = self.line.curvature_radius()
-            self.caps = np.sqrt(LATERAL_ACCEL * np.minimum(radii, 1e6))
-        return self.caps
+            smooth = self.line.smoothed()
+            radii = smooth.curvature_radius(window=8.0)
+            self.caps = np.vstack([smooth.s, np.sqrt(LATERAL_ACCEL * np.minimum(radii, 1e6))])
+        return self.caps[0], self.caps[1]
 
     def stops(self) -> list[Event]:
         return [e for e in self.events if e.kind is ActionKind.STOP]

@@ -102,9 +102,9 @@ def _through_junction(drive: Drive, p: Participant, match: SiteMatch, road_map: 
     _along(drive, actions, before, start=max(LEAD, 0.35 * drive.line.length), side=side)
     if drive.left_road:
         return drive.line.length
-    entry = drive.line.length
     to = actions[move_at].to if move_at is not None else None
     turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map)
+    entry = drive.line.length
     exit_line = exit_corridor.own_line(exit_number)
     drive.line = concat([drive.line, turn, exit_line])
     drive.corridor, drive.lane, drive.against = exit_corridor, exit_number, False
@@ -126,6 +126,13 @@ def _junction_line(
     drive: Drive, arm: Arm, move: ActionKind, to: Any, match: SiteMatch, road_map: RoadMap
 ) -> tuple[Polyline, Corridor, int]:
     """The line across the junction, the corridor it leaves on and the lane number it enters."""
+    if not drive.against and move is not ActionKind.U_TURN:
+        current = drive.corridor.own[drive.lane - 1]
+        connection = _pick_connection(match, arm, move, current, to)
+        if connection.from_lane != current.id:
+            number = _number(arm, connection.from_lane)
+            drive.shift_to(number)
+            drive.notes.append(f"moves to lane {number} to {move.value}")
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
     if drive.against or move is ActionKind.U_TURN:
@@ -138,10 +145,6 @@ def _junction_line(
         else:
             turn = bezier(end, heading, start.point(0.0), start.heading(0.0))
         return turn, corridor, number
-    current = drive.corridor.own[drive.lane - 1]
-    connection = _pick_connection(match, arm, move, current, to)
-    if connection.from_lane != current.id:
-        drive.notes.append(f"moved to lane {_number(arm, connection.from_lane)} to {move.value}")
     target = _lane(match, connection.to_lane)
     exit_arm = match.site.arm_of_lane(connection.to_lane)
     assert exit_arm is not None

@@ -126,6 +126,8 @@ def _read_net(net_file: Path, source: Path) -> Net:
         return sumolib.net.readNet(str(net_file), withInternal=True)
     except xml.sax.SAXParseException as exc:
         _fail(source, f"not a readable SUMO network: line {exc.getLineNumber()}: {exc.getMessage()}")
+    except SyntaxError as exc:  # lxml's XMLSyntaxError, when sumolib parses with lxml
+        _fail(source, f"not a readable SUMO network: line {exc.lineno}: {exc.msg}")
     except KeyError as exc:
         _fail(source, f"not a readable SUMO network: missing attribute or reference {exc}")
     except (xml.sax.SAXException, ValueError, IndexError, TypeError, AttributeError) as exc:

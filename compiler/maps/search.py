@@ -101,14 +101,29 @@ def match_site(site: Site, needs: tuple[Need, ...], *, clamp: bool = False) -> S
     """The best way to stage `needs` on `site`: an exact fit under the least rotation, else the
     rotation with the fewest clamps (when allowed); None when no rotation fits."""
     best: SiteMatch | None = None
+    best_key: tuple[int, int] | None = None
     order = sorted(ROTATIONS, key=lambda r: (abs(angle_diff(r + site.orientation, 0.0)), r))
     for rotation in order:
         found = _fit(site, needs, rotation, clamp)
-        if found is not None and (best is None or len(found.clamped) < len(best.clamped)):
-            best = found
-            if best.exact:
-                break
+        if found is None:
+            continue
+        # Fewest clamps first; then the most participants without a stated manoeuvre that can
+        # go straight on (what lowering plans for them), so that a T's stem is left to turners.
+        key = (len(found.clamped), -_straight_on(site, needs, found))
+        if best_key is None or key < best_key:
+            best, best_key = found, key
     return best
+
+
+def _straight_on(site: Site, needs: tuple[Need, ...], match: SiteMatch) -> int:
+    count = 0
+    for need in needs:
+        placement = match.placement(need.participant)
+        if need.move is not None or placement is None or placement.arm is None or site.kind is RoadKind.STRAIGHT:
+            continue
+        arm = next(a for a in site.arms if a.id == placement.arm)
+        count += any(c.direction == "s" for c in site.connections_from(arm))
+    return count
 
 
 def _fit(site: Site, needs: tuple[Need, ...], rotation: int, clamp: bool) -> SiteMatch | None:

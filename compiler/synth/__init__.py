@@ -17,7 +17,7 @@ from sovarc.compiler.lower import Lowered
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
 from sovarc.compiler.synth.limits import worst_ratio
-from sovarc.compiler.synth.paths import plan_path
+from sovarc.compiler.synth.paths import Path, plan_path
 from sovarc.compiler.synth.timing import knots, sample
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 from sovarc.dsl.ir import ActionKind, Role
@@ -76,7 +76,7 @@ def _trajectory(
         x, y, heading, scale = path.pose(float(si))
         samples.append(Sample(float(t), x, y, heading, float(vi) * scale))
     if vehicle:
-        _check_drivable(pid, samples, lowered)
+        _check_drivable(pid, path, s, v, lowered)
     return (
         Trajectory(
             participant=pid,
@@ -92,13 +92,17 @@ def _trajectory(
     )
 
 
-def _check_drivable(pid: str, samples: list[Sample], lowered: Lowered) -> None:
-    points = np.array([(p.x, p.y) for p in samples])
-    speeds = np.array([p.speed for p in samples])
-    if float(np.ptp(points, axis=0).max()) < 1.0:
-        return  # it never moves
-    limit = max(float(speeds.max()) * 1.05, 1.0)
-    ratio = worst_ratio(points, speeds, limit)
+def _check_drivable(pid: str, path: Path, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
+    """TOPP-RA's envelope on the path, every metre of the driven stretch, over the planned speeds."""
+    if s[-1] - s[0] < 2.0:
+        return  # it (almost) never moves
+    grid = np.arange(s[0], s[-1], 1.0)
+    unique, first = np.unique(np.round(s, 3), return_index=True)
+    fastest = np.maximum.reduceat(v, first)
+    planned = np.interp(grid, unique, fastest)
+    points = np.array([path.pose(float(g))[:2] for g in grid])
+    limit = max(float(planned.max()) * 1.05, 1.0)
+    ratio = worst_ratio(points, planned, limit)
     if ratio > ENVELOPE_SLACK:
         raise SynthesisError(
             Diagnostic(

@@ -14,7 +14,7 @@ import itertools
 from dataclasses import dataclass
 
 import numpy as np
-from ruckig import InputParameter, Result, Ruckig, Trajectory
+from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 from sovarc.compiler.lower.solve import A_UP, B_DOWN, LegValues
 
 MAX_ACCEL = 4.5  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
@@ -109,7 +109,10 @@ def _ruckig(otg: Ruckig, a: Knot, b: Knot) -> Trajectory | None:
     inp.max_jerk = [MAX_JERK]
     inp.minimum_duration = duration
     trajectory = Trajectory(1)
-    result = otg.calculate(inp, trajectory)
+    try:
+        result = otg.calculate(inp, trajectory)
+    except RuckigError:  # no jerk-limited profile lasts exactly this long
+        return None
     if result not in (Result.Working, Result.Finished) or abs(trajectory.duration - duration) > 1e-6:
         return None
     return trajectory
