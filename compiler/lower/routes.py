@@ -49,6 +49,7 @@ def vehicle_route(
     if entry is not None:
         events = [_at_stop_line(e, entry, actions) for e in events]
     starts_at_rest = bool(actions) and actions[0].kind is ActionKind.STOP
+    drive.lanes.update(lanes_touched(drive.line, match))
     return Route(
         participant=p,
         body=CAR,
@@ -232,3 +233,16 @@ def _at_stop_line(event: Event, entry: float, actions: Any) -> Event:
     if following in JUNCTION_MOVES and event.hi >= entry - 2.0:
         return Event(event.index, event.kind, entry - 1.0, entry - 1.0)
     return event
+
+
+def lanes_touched(line: Polyline, match: SiteMatch, margin: float = 0.3) -> set[str]:
+    """Every lane of the site whose area the line passes through (within `margin` of its edge)."""
+    points = line.resample(1.0)
+    found = set()
+    for arm in match.site.arms:
+        for lane in arm.incoming + arm.outgoing:
+            shape = Polyline(lane.shape)
+            reach = lane.width / 2.0 + margin
+            if any(shape.project((float(x), float(y)))[1] <= reach for x, y in points[:: max(1, len(points) // 400)]):
+                found.add(lane.id)
+    return found

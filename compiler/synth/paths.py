@@ -1,9 +1,9 @@
 """Drivable paths through a route's waypoints, with OMPL's Dubins state space.
 
 Waypoints (x, y, heading) are taken along the route every WAYPOINT_STEP metres. Between two
-waypoints the path is the shortest Dubins curve (forward driving). Its turning radius is the
-largest of RADII below the route's own radius of curvature there: a Dubins curve turns at
-its radius, so a small radius on a nearly straight road would make tight wiggles.
+waypoints the path is the shortest Dubins curve (forward driving). Its turning radius is
+just under the route's own radius of curvature there: a Dubins curve turns at its radius,
+so a smaller one would make wiggles tighter than the road.
 Each curve is checked against the route's corridor (the front bumper stays within half a
 lane of the route's line, a SpaceInformation validity checker); a curve that leaves it
 (a turn tighter than the radius) is replaced by the straight chord between its waypoints,
@@ -20,7 +20,9 @@ from ompl import base as ob
 from sovarc.compiler.lower.polyline import Polyline
 
 WAYPOINT_STEP = 4.0  # m
-RADII = (3.0, 6.0, 12.0, 25.0, 50.0, 100.0, 200.0, 400.0)  # m; 3 m is a tight junction corner
+MIN_RADIUS = 3.0  # m; a tight junction corner
+RADIUS_STEP = 1.08  # turning radii come in classes this far apart (a space per class)
+MAX_RADIUS = 2000.0
 CORRIDOR = 1.2  # m the path may stray from the route's line
 CHECK_STEP = 0.5  # m between checked states
 EXTENSION = 60.0  # m of straight road added past the route's end, so that nobody runs out of path
@@ -78,10 +80,13 @@ def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     lengths = np.empty(count - 1)
     spaces: list[ob.DubinsStateSpace | None] = []
     chords = 0
+    made: dict[float, tuple[ob.DubinsStateSpace, ob.SpaceInformation]] = {}
     for k in range(count - 1):
-        tightest = 0.8 * min(local[k], local[k + 1])
-        radius = max((r for r in RADII if r <= tightest), default=RADII[0])
-        space, info = _space(radius, box, checker)
+        tightest = 0.9 * min(local[k], local[k + 1])
+        radius = _radius_class(tightest)
+        if radius not in made:
+            made[radius] = _space(radius, box, checker)
+        space, info = made[radius]
         a_state, b_state = space.allocState(), space.allocState()
         _set(a_state, states[k])
         _set(b_state, states[k + 1])
@@ -94,6 +99,13 @@ def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
             spaces.append(None)
         lengths[k] = length
     return Path(at, states, lengths, spaces), chords
+
+
+def _radius_class(radius: float) -> float:
+    if radius <= MIN_RADIUS:
+        return MIN_RADIUS
+    steps = math.floor(math.log(min(radius, MAX_RADIUS) / MIN_RADIUS, RADIUS_STEP))
+    return round(MIN_RADIUS * RADIUS_STEP**steps, 6)
 
 
 class _Corridor:
