@@ -50,6 +50,10 @@ def _load(config: dict[str, Any]) -> Any:
     params.n_parallel = 1  # one slot: requests are serial, and the whole context goes to it
     params.cpuparams.n_threads = config["threads"]
     params.cpuparams_batch.n_threads = config["threads"]
+    # No busy-waiting between llama.cpp's threads: on a shared 2-core machine a spinning thread waits for a
+    # descheduled one, and generation fell from ~12 to under 1 token/s under load.
+    params.cpuparams.poll = 0
+    params.cpuparams_batch.poll = 0
     params.sampling.temp = 0.0
     params.sampling.seed = config["seed"]
     params.api_keys = [config["api_key"]]
