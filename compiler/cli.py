@@ -12,6 +12,14 @@ from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from sovarc.compiler.cli_backend import (
+    add_site_options,
+    cmd_eval_srr,
+    cmd_lower,
+    print_plans,
+    run_targets,
+    target_names,
+)
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import STAGE_NAMES, Options, entry_stage, run_pipeline
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
@@ -60,7 +68,8 @@ COMMANDS: dict[str, str] = {
     "schema": "print the JSON Schema of the scenario IR's JSON form",
     "import-truth": "convert SoVAR-style ground-truth JSON into .sov scenarios",
     "extract": "read crash reports into .sov scenarios (the front end alone)",
-    "eval": "measure the compiler against ground truth (extraction)",
+    "eval": "measure the compiler against ground truth (extraction, srr)",
+    "lower": "stage a scenario on a map's sites and write the timed plan",
 }
 
 
@@ -88,16 +97,26 @@ def _build_parser() -> argparse.ArgumentParser:
             "  sovarc examples/scenarios/straight_rear_end_stopped_traffic.sov\n"
             "  sovarc examples/reports/left_turn_oncoming_pickup.txt\n"
             "  sovarc scenario.sov --dump-ir-after=read\n"
-            "  sovarc scenario.sov -o checked.sov"
+            "  sovarc scenario.sov -o checked.sov\n"
+            "  sovarc examples/reports/left_turn_oncoming_pickup.txt -t sumo --roads 3 -o out\n"
+            "  sovarc scenario.sov --dump-ir-after=lower -m city.net.xml"
         ),
     )
     run.add_argument("input", help="a crash report (.txt) or a scenario (.sov)")
-    run.add_argument("-t", "--target", help="target to emit (none are built yet)")
-    run.add_argument("-o", "--output", help="write the final IR here instead of standard output")
+    run.add_argument(
+        "-t",
+        "--target",
+        type=target_names,
+        metavar="TARGET",
+        help="stage the crash on the map and emit and check: sumo, openscenario, fmu or all",
+    )
+    run.add_argument("-o", "--output", help="the final IR (no -t), or the output folder (with -t)")
+    add_site_options(run)
+    run.add_argument("--ego", help="with -t fmu: the driving system under test, an FMI 2.0 FMU")
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
     run.add_argument(
         "--dump-ir-after",
-        choices=STAGE_NAMES,
+        choices=(*STAGE_NAMES, "lower"),
         metavar="STAGE",
         action="append",
         default=[],
@@ -105,6 +124,23 @@ def _build_parser() -> argparse.ArgumentParser:
     )
     run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
     _add_llm(run)
+
+    low = sub.add_parser(
+        "lower",
+        help=COMMANDS["lower"],
+        formatter_class=_formatter,
+        description=(
+            "Stage a scenario on sites of a map: routes, the collision area, Z3 constraints (Groups 1-5),\n"
+            "OMPL paths and Ruckig timing. Writes, per site, plan.txt (readable), plan.json and plan.png.\n\n"
+            "examples:\n"
+            "  sovarc lower examples/scenarios/intersection_left_turn_across_path_side.sov -o out\n"
+            "  sovarc lower scenario.sov -m city.net.xml --roads 3 --seed 7 -o out"
+        ),
+    )
+    low.add_argument("input", help="a scenario (.sov or .json)")
+    add_site_options(low)
+    low.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    low.add_argument("-o", "--output", required=True, help="folder for one sub-folder per site")
 
     check = sub.add_parser(
         "check",
@@ -228,6 +264,22 @@ def _build_parser() -> argparse.ArgumentParser:
     exv.add_argument("--truth", required=True, help="folder of <category>/<n>.json ground truth")
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     _add_llm(exv)
+    srr = which.add_parser(
+        "srr",
+        formatter_class=_formatter,
+        help="scenario reconstruction rate in SUMO, per road kind",
+        description="Stage every scenario on --roads sites of each map, replay it in SUMO and print the\n"
+        "reconstruction rate per road kind (the paper's Table 4) and the failures by class\n"
+        "(Table 5: planning failed, crash type mismatch, line crossing).\n\n"
+        "example:\n"
+        "  sovarc import-truth ../shared/data/nmvccs/truth -o truth\n"
+        "  sovarc eval srr truth --roads 3 -m examples/maps/town.net.xml --json srr.json",
+    )
+    srr.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
+    srr.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
+    srr.add_argument("--roads", type=int, default=3, metavar="N", help="sites per scenario (default 3)")
+    srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    srr.add_argument("--json", help="also write every scenario-site's result here")
     return parser
 
 
@@ -302,8 +354,6 @@ def _options(args: argparse.Namespace) -> Options:
 
 
 def _cmd_run(args: argparse.Namespace) -> int:
-    if args.target:
-        raise UsageError(f"unknown target '{args.target}'; no targets are built yet")
     from sovarc.dsl import read_source
 
     start = entry_stage(args.input)
@@ -321,6 +371,10 @@ def _cmd_run(args: argparse.Namespace) -> int:
         return EXIT_INPUT
     for warning in log.warnings:
         print(warning.render({source.name: source}), file=sys.stderr)
+    if "lower" in args.dump_ir_after:
+        return print_plans(result, args)
+    if args.target:
+        return run_targets(result, args)
     text = to_text(result)
     if args.output:
         write_atomic(args.output, text)
@@ -491,7 +545,15 @@ def _cmd_extract(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
+def _cmd_lower(args: argparse.Namespace) -> int:
+    scenario, _ = load_scenario(args.input)
+    verify_or_raise(scenario)
+    return cmd_lower(args, scenario)
+
+
 def _cmd_eval(args: argparse.Namespace) -> int:
+    if args.evaluation == "srr":
+        return cmd_eval_srr(args)
     from sovarc.compiler.evaluation.extraction import Report
     from sovarc.compiler.frontend.truth import import_truth_file
     from sovarc.compiler.progress import progress
@@ -531,6 +593,7 @@ HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
     "eval": _cmd_eval,
     "import-truth": _cmd_import_truth,
     "run": _cmd_run,
+    "lower": _cmd_lower,
     "check": _cmd_check,
     "fmt": _cmd_fmt,
     "diff": _cmd_diff,

@@ -1,0 +1,153 @@
+"""The back-end commands of the CLI: `sovarc lower`, `-t TARGET` on the main job, `sovarc eval srr`."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import Counter
+from pathlib import Path
+
+from sovarc.compiler.backend import TARGETS, compile_sites, plans_for, summary
+from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.maps import load_map
+from sovarc.compiler.progress import progress
+from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
+from sovarc.dsl.ir import Scenario
+
+FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
+
+
+def add_site_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-m", "--map", help="road network, .net.xml or .xodr (default: the bundled example town)")
+    parser.add_argument("--roads", type=int, default=1, metavar="N", help="stage on N distinct sites (default 1)")
+
+
+def target_names(value: str) -> tuple[str, ...]:
+    if value == "all":
+        return TARGETS
+    if value not in TARGETS:
+        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(TARGETS)} or all")
+    return (value,)
+
+
+def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
+    """The main job's back end: plans on --roads sites, each target emitted and checked."""
+    out = Path(args.output) if args.output else Path("sovarc-out") / scenario.name
+    results = compile_sites(
+        scenario, args.map, roads=args.roads, seed=args.seed, targets=args.target, out_dir=out, ego=args.ego
+    )
+    print(summary(results, args.target), end="")
+    print(f"written to {out}/", file=sys.stderr)
+    # A failed ego test (fmu) is a finding about the driving system, not a failure of the run.
+    ok = all(r.plan is not None and all(_passed(v) for t, v in r.verdicts.items() if t != "fmu") for r in results)
+    return EXIT_OK if ok else EXIT_INPUT
+
+
+def print_plans(scenario: Scenario, args: argparse.Namespace) -> int:
+    """`--dump-ir-after=lower`: the plan of each site in its text form."""
+    from sovarc.compiler.backend import default_map
+    from sovarc.compiler.plan_text import render_plan
+
+    results = plans_for(scenario, load_map(args.map or default_map()), args.roads, args.seed)
+    for r in results:
+        print(f"// ----- plan on {r.site} -----")
+        if r.plan is not None:
+            print(render_plan(r.plan), end="")
+        elif r.error is not None:
+            print(r.error.render(), file=sys.stderr)
+    return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
+
+
+def cmd_lower(args: argparse.Namespace, scenario: Scenario) -> int:
+    results = compile_sites(scenario, args.map, roads=args.roads, seed=args.seed, out_dir=args.output)
+    for r in results:
+        if r.error is not None:
+            print(r.error.render(), file=sys.stderr)
+    print(summary(results, ()), end="")
+    return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
+
+
+def _passed(verdict: object) -> bool:
+    from sovarc.compiler.backend import passed
+
+    return passed(verdict)
+
+
+def classify(verdict: object) -> str | None:
+    """The paper's Table 5 classes for a SUMO verdict; None when it passed."""
+    failed = {f.check for f in verdict.failures}  # type: ignore[attr-defined]
+    if not failed:
+        return None
+    if failed & {"collision", "pair", "impact_angle"}:
+        return "crash type mismatch"
+    if "lane_lines" in failed:
+        return "line crossing"
+    return "replay error"
+
+
+def cmd_eval_srr(args: argparse.Namespace) -> int:
+    """The scenario reconstruction rate of the SUMO oracle, per road kind (the paper's Tables 4 and 5)."""
+    from sovarc.compiler.scenario_io import load_scenario
+    from sovarc.targets import sumo
+
+    files = sorted(p for name in args.scenarios for p in _sov_files(Path(name)))
+    maps = args.map or [str(_default())]
+    report: dict[str, dict[str, object]] = {}
+    for map_path in maps:
+        road_map = load_map(map_path)
+        rows: list[dict[str, object]] = []
+        for path in progress(files, len(files), label=f"srr {Path(map_path).name}"):
+            scenario, _ = load_scenario(path)
+            kind = scenario.road.kind.value if hasattr(scenario.road.kind, "value") else "unknown"
+            try:
+                results = plans_for(scenario, road_map, args.roads, args.seed)
+            except Exception as exc:  # no fitting site: every requested site failed to plan
+                results = []
+                reason = getattr(exc, "diagnostics", None)
+                rows += [_row(path, kind, "-", "planning failed", str(reason[0].message if reason else exc))]
+                rows += [_row(path, kind, "-", "planning failed", "no site")] * (args.roads - 1)
+                continue
+            for r in results:
+                if r.plan is None:
+                    message = r.error.diagnostics[0].message if r.error else ""
+                    rows.append(_row(path, kind, r.site, "planning failed", message))
+                    continue
+                verdict = sumo.check(r.plan)
+                failure = classify(verdict)
+                reasons = "; ".join(f.message for f in verdict.failures)
+                rows.append(_row(path, kind, r.site, failure, reasons))
+            missing = args.roads - len(results)
+            rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
+        report[Path(map_path).name] = {"rows": rows}
+        print(_srr_table(Path(map_path).name, rows))
+    if args.json:
+        write_atomic(args.json, json.dumps(report, indent=2) + "\n")
+    return EXIT_OK
+
+
+def _row(path: Path, kind: str, site: str, failure: str | None, reason: str) -> dict[str, object]:
+    return {"scenario": path.stem, "kind": kind, "site": site, "passed": failure is None, "failure": failure,
+            "reason": reason}  # fmt: skip
+
+
+def _srr_table(name: str, rows: list[dict[str, object]]) -> str:
+    kinds = sorted({str(r["kind"]) for r in rows})
+    lines = [f"SRR on {name} (scenario-sites reconstructed / attempted)", f"  {'road kind':<14}{'SRR':>8}  n"]
+    for kind in [*kinds, "all"]:
+        chosen = [r for r in rows if kind in ("all", r["kind"])]
+        ok = sum(1 for r in chosen if r["passed"])
+        lines.append(f"  {kind:<14}{100.0 * ok / max(1, len(chosen)):7.1f}%  {ok}/{len(chosen)}")
+    counts = Counter(str(r["failure"]) for r in rows if not r["passed"])
+    lines.append("  failures: " + ", ".join(f"{c} {counts[c]}" for c in FAILURE_CLASSES))
+    return "\n".join(lines) + "\n"
+
+
+def _sov_files(path: Path) -> list[Path]:
+    return sorted(path.glob("*.sov")) if path.is_dir() else [path]
+
+
+def _default() -> Path:
+    from sovarc.compiler.backend import default_map
+
+    return default_map()
