@@ -59,9 +59,7 @@ def _on_road_samples(trajectory: Trajectory) -> list[Sample]:
     """The samples not in a driveway: before a drive_into ends, or after a drive_off begins."""
     into = [s.end_t for s in trajectory.segments if s.action.endswith(":drive_into")]
     off = [s.start_t for s in trajectory.segments if s.action.endswith(":drive_off")]
-    return [
-        s for s in trajectory.samples if all(s.t > t + 1e-9 for t in into) and all(s.t < t - 1e-9 for t in off)
-    ]
+    return [s for s in trajectory.samples if all(s.t > t + 1e-9 for t in into) and all(s.t < t - 1e-9 for t in off)]
 
 
 def _speed_cap(plan: Plan, participant: str) -> float:
@@ -150,7 +148,7 @@ def test_striker_and_victim_touch_at_the_faces_the_crash_type_names(name: str) -
             back = (victim.x - front[0]) * hx + (victim.y - front[1]) * hy  # m behind the victim's front
             lateral = abs((front[0] - victim.x) * hy - (front[1] - victim.y) * hx)
             if not (-0.1 <= back <= length + 0.1) or lateral > width / 2.0 + LANE_MARGIN:
-                bad.append(f"{where}: side with the striker {back:.2f} m behind the victim's front, {lateral:.2f} m aside")
+                bad.append(f"{where}: side: striker {back:.2f} m behind the victim's front, {lateral:.2f} m aside")
     assert not bad, "\n".join(bad)
 
 
@@ -183,7 +181,7 @@ def test_striker_and_victim_reach_the_contact_within_one_step(name: str) -> None
             late = arrival - plan.impact.time
             # a moving participant arrives with the impact; a stopped one may have been there all along
             if late > plan.step + 1e-6 or (at_impact > 0.1 and late < -plan.step - 1e-6):
-                bad.append(f"{plan.site} {pid}: reaches its contact at {arrival:.2f} s, impact at {plan.impact.time:.2f}")
+                bad.append(f"{plan.site} {pid}: at its contact at {arrival:.2f} s, impact at {plan.impact.time:.2f}")
     assert not bad, "\n".join(bad)
 
 
