@@ -1,0 +1,112 @@
+"""Filling unknown facts: each unknown gets a choice and a note; known facts are never changed."""
+
+from __future__ import annotations
+
+from sovarc.compiler.lower.assume import assume
+from sovarc.dsl import parse
+from sovarc.dsl.ir import ActionKind, CrashType, Heading, Unknown
+
+from tests.compiler.lower.staging import NAMES, scenario
+
+UNKNOWNS = """scenario unknowns {
+  road {
+    kind intersection
+    lanes 4
+    speed_limit unknown
+  }
+  vehicle V1 {
+    heading north
+    lane 2
+    speed 30 km/h
+    actions {
+      turn_left
+    }
+  }
+  vehicle V2 {
+    heading unknown
+    lane unknown
+    speed unknown
+    actions unknown
+  }
+  crash {
+    type unknown
+    striker unknown
+    victim V1
+  }
+}
+"""
+
+
+def test_every_unknown_is_filled_with_a_note() -> None:
+    original = parse(UNKNOWNS)
+    filled, notes = assume(original)
+    v1, v2 = filled.participant("V1"), filled.participant("V2")
+    assert v1 is not None and v2 is not None
+    assert filled.crash.striker == "V2"
+    assert filled.crash.type is CrashType.SIDE  # V2's heading was unknown: a side impact is the default
+    assert [a.kind for a in v2.known_actions] == [ActionKind.FOLLOW_LANE]
+    assert v2.heading is Heading.EAST  # crossing V1's path at an intersection
+    assert v2.lane == 1
+    assert notes == [
+        "striker unknown: planned as V2",
+        "crash type unknown: planned as side, from the headings",
+        "V2 actions unknown: planned as follow_lane",
+        "V2 heading unknown: planned east (crossing V1's path)",
+        "V2 lane unknown: planned in lane 1",
+    ]
+    # what the report said stays as it said it; what lowering does not need stays unknown
+    assert v1 == original.participant("V1")
+    assert filled.crash.victim == "V1"
+    assert isinstance(v2.speed, Unknown) and isinstance(filled.road.speed_limit, Unknown)
+    assert filled.road == original.road and filled.environment == original.environment
+
+
+def test_a_rear_end_partner_gets_the_same_heading_and_lane() -> None:
+    text = UNKNOWNS.replace("type unknown", "type rear_end").replace("striker unknown", "striker V2")
+    filled, notes = assume(parse(text))
+    v2 = filled.participant("V2")
+    assert v2 is not None and (v2.heading, v2.lane) == (Heading.NORTH, 2)
+    assert "V2 heading unknown: planned north (same as V1, for a rear_end crash)" in notes
+
+
+def test_a_head_on_partner_comes_the_other_way_unless_one_drives_the_wrong_way() -> None:
+    text = UNKNOWNS.replace("type unknown", "type frontal").replace("striker unknown", "striker V2")
+    head_on = assume(parse(text))[0].participant("V2")
+    assert head_on is not None and head_on.heading is Heading.SOUTH
+    wrong_way = parse(text.replace("turn_left", "retrograde"))
+    v2 = assume(wrong_way)[0].participant("V2")
+    assert v2 is not None and v2.heading is Heading.NORTH  # V1 comes against the traffic in its own direction
+
+
+def test_the_crash_type_follows_from_known_headings() -> None:
+    text = UNKNOWNS.replace("heading unknown", "heading south").replace("striker unknown", "striker V2")
+    filled, notes = assume(parse(text))
+    assert filled.crash.type is CrashType.FRONTAL
+    assert "crash type unknown: planned as frontal, from the headings" in notes
+
+
+def test_a_fully_known_scenario_is_left_as_it_is() -> None:
+    checked = 0
+    for name in NAMES:
+        original = scenario(name)
+        if any(isinstance(p.heading, Unknown) or isinstance(p.lane, Unknown) for p in original.participants):
+            continue
+        if isinstance(original.crash.type, Unknown) or any(
+            isinstance(p.actions, Unknown) or not p.actions for p in original.participants
+        ):
+            continue
+        filled, notes = assume(original)
+        assert filled == original, name
+        assert notes == [], name
+        checked += 1
+    assert checked >= 10
+
+
+def test_a_pedestrian_without_actions_crosses_and_keeps_its_unknown_heading() -> None:
+    text = UNKNOWNS.replace("vehicle V2", "pedestrian V2").replace("    lane unknown\n", "", 1)
+    filled, notes = assume(parse(text))
+    v2 = filled.participant("V2")
+    assert v2 is not None
+    assert [a.kind for a in v2.known_actions] == [ActionKind.CROSS]
+    assert isinstance(v2.heading, Unknown)  # a pedestrian is laid against its vehicle, not on a heading
+    assert "V2 actions unknown: planned as cross" in notes

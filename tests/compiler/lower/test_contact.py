@@ -1,0 +1,73 @@
+"""Where a striker can meet a victim (the collision area C_A), on hand-made straight-line routes."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.lower.contact import FACE, contacts, describe
+from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.lower.route import Route
+from sovarc.compiler.plan import CAR
+from sovarc.dsl.ir import CrashType, Participant, Role
+
+
+def route(pid: str, *points: tuple[float, float]) -> Route:
+    return Route(Participant(pid, Role.VEHICLE), CAR, Polyline(list(points)), [], (), (), 0.0)
+
+
+NORTH = route("A", (0.0, -50.0), (0.0, 50.0))
+EAST = route("B", (-50.0, 0.0), (50.0, 0.0))
+
+
+def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None:
+    (side,) = contacts(NORTH, EAST, CrashType.SIDE)
+    assert (side.kind, side.sign, side.angle) == ("crossing", 0, pytest.approx(90.0))
+    assert side.lo == side.hi == pytest.approx(50.0)  # the striker's front is at the crossing point
+    # the victim's front is half a body past the crossing, so that its side's middle is there
+    assert side.victim_s(side.lo) == pytest.approx(50.0 + FACE[CrashType.SIDE] * CAR.length)
+    (frontal,) = contacts(NORTH, EAST, CrashType.FRONTAL)
+    assert frontal.victim_s(frontal.lo) == pytest.approx(50.0)  # fronts meet
+    assert contacts(NORTH, EAST, CrashType.REAR_END) == []
+    assert describe(side) == "paths cross at 90 degrees"
+
+
+def test_a_lane_shared_in_the_same_direction_is_a_rear_end_range() -> None:
+    striker = route("A", (0.0, 0.0), (0.0, 100.0))
+    victim = route("B", (0.0, 20.0), (0.0, 120.0))  # 20 m ahead on the same line
+    (rear,) = contacts(striker, victim, CrashType.REAR_END)
+    assert (rear.kind, rear.sign, rear.angle) == ("shared", 1, 0.0)
+    assert (rear.lo, rear.hi) == (pytest.approx(20.0), pytest.approx(100.0))
+    # at any striker position s the victim's front is one body length ahead: its rear touches the striker
+    for s in (30.0, 60.0, 90.0):
+        assert victim.line.point(rear.victim_s(s))[1] - striker.line.point(s)[1] == pytest.approx(CAR.length)
+    assert contacts(striker, victim, CrashType.FRONTAL) == []
+    assert contacts(striker, victim, CrashType.SIDE) == []  # 80 m side by side in one lane is no side impact
+    assert describe(rear) == "paths share 80 m of lane, same direction"
+
+
+def test_a_lane_shared_in_opposite_directions_is_a_head_on_range() -> None:
+    striker = route("A", (0.0, 0.0), (0.0, 100.0))
+    victim = route("B", (0.0, 100.0), (0.0, 0.0))
+    (frontal,) = contacts(striker, victim, CrashType.FRONTAL)
+    assert (frontal.kind, frontal.sign, frontal.angle) == ("shared", -1, 180.0)
+    for s in (10.0, 50.0, 90.0):  # fronts at the same point
+        assert victim.line.point(frontal.victim_s(s)) == pytest.approx(striker.line.point(s))
+    assert contacts(striker, victim, CrashType.REAR_END) == []
+    assert contacts(striker, victim, CrashType.SIDE) == []
+
+
+def test_a_merge_gives_a_rear_end_range_after_it_and_a_side_contact_where_the_lines_join() -> None:
+    striker = route("A", (-15.0, 24.0), (0.0, 50.0), (0.0, 100.0))  # joins the victim's line at 30 degrees
+    victim = route("B", (0.0, 0.0), (0.0, 100.0))
+    join = striker.line.s[1]  # about 30 m
+    rear = contacts(striker, victim, CrashType.REAR_END)
+    assert rear[0].kind == "shared" and rear[0].sign == 1 and rear[0].lo == pytest.approx(join, abs=0.5)
+    assert any(c.kind == "crossing" and c.angle < 45.0 for c in rear[1:])
+    side = contacts(striker, victim, CrashType.SIDE)
+    assert side and all(c.kind == "crossing" for c in side)
+    first = side[0]
+    assert first.angle == pytest.approx(30.0, abs=1.0)
+    assert first.lo == pytest.approx(join, abs=1.0)
+    # the striker's front meets the middle of the victim's side at the join
+    middle = first.victim_s(first.lo) - FACE[CrashType.SIDE] * CAR.length
+    assert victim.line.point(middle)[1] == pytest.approx(50.0, abs=1.0)
+    assert contacts(striker, victim, CrashType.FRONTAL) == []
