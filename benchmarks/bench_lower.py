@@ -89,6 +89,10 @@ def _stage(map_name: str, road_map: RoadMap, name: str, scenario: Scenario, seed
     except SovarcError as error:
         search = time.perf_counter() - start
         return [Run(**base, site=None, ok=False, reason=_reason(error), seconds=None)] * ROADS, search
+    except Exception as error:  # a crash: as below
+        search = time.perf_counter() - start
+        reason = f"CRASH {type(error).__name__}: {error}"
+        return [Run(**base, site=None, ok=False, reason=reason, seconds=None)] * ROADS, search
     search = time.perf_counter() - start
     runs = []
     for match in matches:
@@ -98,6 +102,8 @@ def _stage(map_name: str, road_map: RoadMap, name: str, scenario: Scenario, seed
             ok, reason = True, None
         except SovarcError as error:
             ok, reason = False, _reason(error)
+        except Exception as error:  # a crash is a bug: counted and named
+            ok, reason = False, f"CRASH {type(error).__name__}: {error}"
         runs.append(Run(**base, site=match.site.id, ok=ok, reason=reason, seconds=time.perf_counter() - start))
     missing = ROADS - len(matches)
     runs += [Run(**base, site=None, ok=False, reason=f"only {len(matches)} fitting sites", seconds=None)] * missing
@@ -162,6 +168,7 @@ def _summary(runs: list[Run], searches: dict[str, list[float]], facts: dict[str,
         "per_kind": {k: _rate([r for r in runs if r.kind == k]) for k in sorted({r.kind for r in runs})},
         "per_map": {},
         "failures": Counter(f"{r.map}: {r.reason}" for r in runs if not r.ok).most_common(),
+        "crashes": sorted({f"{r.map}: {r.scenario} on {r.site}" for r in runs if (r.reason or "").startswith("CRASH")}),
         "time_median_s": statistics.median(timed) if timed else None,
         "time_p90_s": _pct(timed, 0.9),
         "by_participants": {},
@@ -220,6 +227,11 @@ def _print(summary: dict[str, Any], count: int) -> None:
     print("failures by reason (scenario-sites):")
     for reason, n in summary["failures"]:
         print(f"{n:>4}  {reason}")
+    if summary["crashes"]:
+        print()
+        print("crashes (not a SovarcError: bugs):")
+        for crash in summary["crashes"]:
+            print(f"      {crash}")
 
 
 if __name__ == "__main__":

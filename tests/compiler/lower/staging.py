@@ -24,7 +24,7 @@ TOWN = EXAMPLES / "maps" / "town.net.xml"
 SCENARIO_DIR = EXAMPLES / "scenarios"
 NAMES = tuple(sorted(p.stem for p in SCENARIO_DIR.glob("*.sov")))
 ROADS = 3
-SEEDS = (0, 1, 2)  # straight scenarios only: on the town the junction sites are the same for every seed
+SEEDS = (0, 1)  # straight scenarios only: on the town the junction sites are the same for every seed
 
 
 @dataclass(frozen=True)
