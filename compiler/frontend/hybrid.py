@@ -22,6 +22,7 @@ from typing import Any
 import jsonschema
 from sovarc.compiler.frontend import prompting
 from sovarc.compiler.frontend.providers.base import Provider
+from sovarc.compiler.frontend.rules import crash_is_stated
 from sovarc.dsl import verify
 from sovarc.dsl.errors import Severity
 from sovarc.dsl.ir import (
@@ -30,13 +31,8 @@ from sovarc.dsl.ir import (
     ActionKind,
     Crash,
     CrashType,
-    Heading,
-    Participant,
-    Road,
-    RoadKind,
     Scenario,
     Side,
-    Unknown,
 )
 
 MAX_REPAIRS = 2
@@ -51,21 +47,10 @@ class AnswerError(Exception):
 
 
 @dataclass(frozen=True)
-class Reading:
-    """One participant as the model read it."""
-
-    heading: Heading | Unknown
-    lane: int | Unknown
-    actions: tuple[Action, ...]
-
-
-@dataclass(frozen=True)
 class Answer:
-    """The model's compact answer, as IR values."""
+    """The model's compact answer, as IR values: each participant's actions, and the crash."""
 
-    road: RoadKind
-    lanes: int | Unknown
-    participants: dict[str, Reading]
+    actions: dict[str, tuple[Action, ...]]
     crash: Crash
 
 
@@ -92,17 +77,10 @@ def parse_answer(text: str, ids: list[str]) -> Answer:
     ]
     if problems:
         raise AnswerError(problems[:8])
-    people = {
-        pid: Reading(
-            _enum_or_unknown(p["heading"], Heading),
-            UNKNOWN if p["lane"] == "unknown" else p["lane"],
-            _dedupe(tuple(_action(a) for a in p["actions"])),
-        )
-        for pid, p in data["participants"].items()
-    }
+    actions = {pid: _dedupe(tuple(_action(a) for a in p["actions"])) for pid, p in data["participants"].items()}
     c = data["crash"]
     crash = Crash(CrashType(c["type"]), _enum_or_unknown(c["striker"], str), _enum_or_unknown(c["victim"], str))
-    return Answer(RoadKind(data["road"]), UNKNOWN if data["lanes"] == "unknown" else data["lanes"], people, crash)
+    return Answer(actions, crash)
 
 
 def _dedupe(actions: tuple[Action, ...]) -> tuple[Action, ...]:
@@ -113,40 +91,20 @@ def _dedupe(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     return tuple(out)
 
 
-def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
-    """The rules' reading with the model's facts merged in; notes name each disagreement and who won."""
+def merge(rules: Scenario, answer: Answer, explicit_crash: bool) -> tuple[Scenario, list[str]]:
+    """The rules' reading with the model's merged in; notes name each disagreement and which reading was kept.
+
+    The rules keep the environment, the road, headings and lanes (exact text patterns, which they read more
+    reliably than a small model). Actions are the model's. The crash is the rules' when a sentence states it
+    outright ("the front of V1 struck the rear of V2": `explicit_crash`), else the model's.
+    """
     notes: list[str] = []
-
-    def pick(what: str, ruled: Any, modelled: Any, rules_win: bool) -> Any:
-        if isinstance(ruled, Unknown):
-            return modelled
-        if isinstance(modelled, Unknown) or ruled == modelled:
-            return ruled
-        winner = ruled if rules_win else modelled
-        notes.append(f"{what}: rules read {ruled}, the model {modelled}; kept {winner}")
-        return winner
-
-    road = Road(
-        pick("road kind", rules.road.kind, answer.road, rules_win=True),
-        pick("lane count", rules.road.lanes, answer.lanes, rules_win=True),
-        rules.road.speed_limit,
-    )
-    people: list[Participant] = []
-    for p in rules.participants:
-        got = answer.participants[p.id]
-        people.append(
-            replace(
-                p,
-                heading=pick(f"{p.id} heading", p.heading, got.heading, rules_win=False),
-                lane=pick(f"{p.id} lane", p.lane, got.lane, rules_win=True),
-                actions=got.actions,
-            )
-        )
+    people = tuple(replace(p, actions=answer.actions[p.id]) for p in rules.participants)
     crash = answer.crash
-    if not isinstance(rules.crash.striker, Unknown) and rules.crash != crash:
-        notes.append(f"crash: rules read {_crash_words(rules.crash)}, the model {_crash_words(crash)}")
-    merged = replace(rules, road=road, participants=tuple(people), crash=crash)
-    return merged, notes
+    if explicit_crash and rules.crash != crash:
+        notes.append(f"crash: the report states {_crash_words(rules.crash)}, the model read {_crash_words(crash)}")
+        crash = rules.crash
+    return replace(rules, participants=people, crash=crash), notes
 
 
 def _crash_words(c: Crash) -> str:
@@ -158,6 +116,7 @@ def model_reading(
 ) -> tuple[Scenario, list[str]]:
     """The rules' scenario with the model's reading merged in, repaired until it verifies."""
     ids = [p.id for p in rules.participants]
+    explicit_crash = crash_is_stated(text)
     narrative = prompting.prepared_narrative(text)
     system = prompting.system_prompt()
     schema = prompting.answer_schema(ids)
@@ -166,7 +125,7 @@ def model_reading(
     for attempt in range(max_repairs + 1):
         answer_text = provider.complete_json(system, user, schema, max_tokens=prompting.answer_budget(ids))
         try:
-            merged, notes = merge(rules, parse_answer(answer_text, ids))
+            merged, notes = merge(rules, parse_answer(answer_text, ids), explicit_crash)
             problems = [d.message for d in verify(merged) if d.severity is Severity.ERROR]
         except AnswerError as exc:
             problems = exc.problems

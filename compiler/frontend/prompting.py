@@ -77,8 +77,31 @@ def system_prompt() -> str:
     parts = [(_prompt_dir() / name).read_text(encoding="utf-8").strip() for name in PROMPT_FILES]
     parts.append("## Worked examples")
     for ex in examples():
-        parts.append(f"Report:\n{ex.narrative}\nAnswer:\n{compact_json(ex.answer)}")
+        parts.append(f"Report:\n{ex.narrative}\nAnswer:\n{compact_json(answer_view(ex.answer))}")
     return "\n\n".join(parts) + "\n"
+
+
+def answer_view(example: dict[str, Any]) -> dict[str, Any]:
+    """An example's full reading cut down to the answer form: what the model decides.
+
+    The example files keep the road, headings and lanes too, as documentation
+    of the whole reading; those facts are read by rules, so the model is not
+    asked for them (every answer token costs time on two CPU cores, and the
+    rules read them more reliably)."""
+    people = {pid: {"actions": p["actions"]} for pid, p in example["participants"].items()}
+    return {"participants": people, "crash": example["crash"]}
+
+
+def full_schema(ids: list[str]) -> dict[str, Any]:
+    """The JSON Schema of a worked example's full reading (for checking the example files)."""
+    schema = answer_schema(ids)
+    lane: dict[str, Any] = {"enum": [*range(1, MAX_LANES + 1), "unknown"]}
+    for person in schema["properties"]["participants"]["properties"].values():
+        person["properties"] = {"heading": {"enum": list(HEADINGS)}, "lane": lane, **person["properties"]}
+        person["required"] = ["heading", "lane", "actions"]
+    schema["properties"] = {"road": {"enum": list(ROAD_KINDS)}, "lanes": lane, **schema["properties"]}
+    schema["required"] = ["road", "lanes", "participants", "crash"]
+    return schema
 
 
 def compact_json(value: object) -> str:
@@ -106,15 +129,12 @@ def repair_prompt(narrative: str, ids: list[str], previous: str, problems: list[
 
 def answer_schema(ids: list[str]) -> dict[str, Any]:
     """The JSON Schema of the compact answer for a report with these participant ids."""
-    lane: dict[str, Any] = {"enum": [*range(1, MAX_LANES + 1), "unknown"]}
 
     def participant(pid: str) -> dict[str, Any]:
         actions = PEDESTRIAN_ACTIONS if pid.startswith("P") else VEHICLE_ACTIONS
         return {
             "type": "object",
             "properties": {
-                "heading": {"enum": list(HEADINGS)},
-                "lane": lane,
                 "actions": {
                     "type": "array",
                     "items": {"enum": list(actions)},
@@ -122,15 +142,13 @@ def answer_schema(ids: list[str]) -> dict[str, Any]:
                     "maxItems": MAX_ACTIONS,
                 },
             },
-            "required": ["heading", "lane", "actions"],
+            "required": ["actions"],
             "additionalProperties": False,
         }
 
     return {
         "type": "object",
         "properties": {
-            "road": {"enum": list(ROAD_KINDS)},
-            "lanes": lane,
             "participants": {
                 "type": "object",
                 "properties": {pid: participant(pid) for pid in ids},
@@ -148,11 +166,11 @@ def answer_schema(ids: list[str]) -> dict[str, Any]:
                 "additionalProperties": False,
             },
         },
-        "required": ["road", "lanes", "participants", "crash"],
+        "required": ["participants", "crash"],
         "additionalProperties": False,
     }
 
 
 def answer_budget(ids: list[str]) -> int:
     """max_tokens for an answer: enough for the longest valid one, so a cut-off means garbage."""
-    return 60 + 70 * len(ids)
+    return 40 + 40 * len(ids)

@@ -19,7 +19,7 @@ def test_there_are_twenty_or_more_examples_and_every_layer_is_in_the_prompt() ->
     system = prompting.system_prompt()
     for heading in ("Layer 1: environment", "Layer 2: road network", "Layer 3: dynamic objects", "Worked examples"):
         assert heading in system
-    for rule in ("intended", "double yellow", "right-most lane", "front"):
+    for rule in ("intended", "double yellow", "right-most lane", "front", "Most vehicles"):
         assert rule in system
     assert system.count("Report:\n") == len(EXAMPLES)
     assert system == prompting.system_prompt()  # the same bytes every time: the model's prefix cache relies on it
@@ -29,9 +29,10 @@ def test_there_are_twenty_or_more_examples_and_every_layer_is_in_the_prompt() ->
 def test_each_example_answer_fits_the_answer_form(example: prompting.Example) -> None:
     ids = participants(normalize_names(example.narrative))
     assert list(example.answer["participants"]) == ids
-    jsonschema.validate(example.answer, prompting.answer_schema(ids))
-    parsed = parse_answer(prompting.compact_json(example.answer), ids)
-    assert set(parsed.participants) == set(ids)
+    jsonschema.validate(example.answer, prompting.full_schema(ids))  # the whole reading, documented
+    shown = prompting.answer_view(example.answer)  # the part the model answers
+    jsonschema.validate(shown, prompting.answer_schema(ids))
+    assert set(parse_answer(prompting.compact_json(shown), ids).actions) == set(ids)
 
 
 def test_examples_cover_every_action_crash_type_and_road_kind() -> None:
