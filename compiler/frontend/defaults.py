@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from sovarc.dsl.ir import ActionKind, Participant, Provenance, Role, Scenario, Unknown
+from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Provenance, Role, Scenario, Unknown
 
 Default = Callable[[Scenario], tuple[Scenario, list[str]]]
 
@@ -46,7 +46,29 @@ def victim_of_two(s: Scenario) -> tuple[Scenario, list[str]]:
     return replace(s, crash=replace(c, victim=other)), ["crash.victim"]
 
 
-DEFAULTS: tuple[Default, ...] = (lane_on_two_lane_road, victim_of_two)
+_OPPOSITE = {Heading.NORTH: Heading.SOUTH, Heading.SOUTH: Heading.NORTH, Heading.EAST: Heading.WEST}
+_OPPOSITE[Heading.WEST] = Heading.EAST
+
+
+def heading_from_crash(s: Scenario) -> tuple[Scenario, list[str]]:
+    """Two vehicles in a rear-end crash travel the same way; head-on, opposite ways (unless one went wrong-way,
+    turned or crossed, when the geometry says nothing)."""
+    c = s.crash
+    vehicles = [p for p in s.participants if p.role is Role.VEHICLE]
+    if len(vehicles) != 2 or c.type not in (CrashType.REAR_END, CrashType.FRONTAL):
+        return s, []
+    known = [p for p in vehicles if not isinstance(p.heading, Unknown)]
+    if len(known) != 1 or any(a.kind not in _STRAIGHT_ON for p in vehicles for a in p.known_actions):
+        return s, []
+    other = next(p for p in vehicles if isinstance(p.heading, Unknown))
+    heading = known[0].heading if c.type is CrashType.REAR_END else _OPPOSITE[known[0].heading]
+    people = tuple(replace(p, heading=heading) if p is other else p for p in s.participants)
+    return replace(s, participants=people), [f"{other.id}.heading"]
+
+
+_STRAIGHT_ON = (ActionKind.FOLLOW_LANE, ActionKind.STOP, ActionKind.CHANGE_LANE)
+
+DEFAULTS: tuple[Default, ...] = (lane_on_two_lane_road, victim_of_two, heading_from_crash)
 
 
 def apply_defaults(s: Scenario) -> Scenario:

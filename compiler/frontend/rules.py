@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from sovarc.compiler.frontend.text import normalize_names, participants, sentences, up_to_first_impact
 from sovarc.dsl.ir import (
@@ -268,6 +268,37 @@ def extract_crash(sents: list[str]) -> Crash:
     return Crash()
 
 
+_BOTH = re.compile(
+    r"\b(V\d)\b[^.]*?\band (?:the )?(V\d)\b[^.]*?\bwere (?:both )?(?:\w+ )?(?:traveling|travelling|driving|heading|"
+    r"proceeding|going) (?:in an? )?(north|south|east|west)",
+    re.IGNORECASE,
+)
+_SAME_WAY = re.compile(
+    r"\b(V\d)\b[^.]*?\b(?:in the same direction|same direction)\b[^.]*?\b(?:behind|ahead of|as|of) (V\d)\b"
+    r"|\b(V\d)\b[^.]*?\b(?:behind|following) (V\d)\b[^.]*?\bsame (?:direction|lane)",
+    re.IGNORECASE,
+)
+
+
+def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
+    """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... in the same direction
+    behind V2"."""
+    heading = {p.id: p.heading for p in people}
+    for sentence in sents:
+        if m := _BOTH.search(sentence):
+            for pid in m.group(1, 2):
+                if isinstance(heading.get(pid), Unknown):
+                    heading[pid] = Heading(m.group(3).lower())
+        if m := _SAME_WAY.search(sentence):
+            a, b = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+            if a in heading and b in heading:
+                if isinstance(heading[a], Unknown):
+                    heading[a] = heading[b]
+                elif isinstance(heading[b], Unknown):
+                    heading[b] = heading[a]
+    return [replace(p, heading=heading[p.id]) for p in people]
+
+
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
     named = normalize_names(text)
@@ -282,6 +313,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         role = Role.PEDESTRIAN if pid.startswith("P") else Role.VEHICLE
         actions = (Action(ActionKind.CROSS),) if role is Role.PEDESTRIAN else _ordered_actions(r.actions or [])
         people.append(Participant(pid, role, r.heading, r.lane, r.speed, actions))
+    people = _shared_headings(before, people)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
         name,
