@@ -88,11 +88,11 @@ class FrontEnd:
     def extract(self, source: Source) -> Extraction:
         from sovarc.compiler.frontend.defaults import apply_defaults
         from sovarc.compiler.frontend.rules import extract
-        from sovarc.compiler.frontend.text import check_narrative
+        from sovarc.compiler.frontend.text import check_narrative, unrepresented
 
         check_narrative(source.text, source.name)
         rules = extract(source.text, scenario_name(source.name), source.name)
-        notes: list[str] = []
+        notes = unrepresented(source.text)
         if not rules.participants:
             raise FrontEndError(
                 f"{source.name}: the report names no vehicle or pedestrian (looked for V1, Vehicle #1, "

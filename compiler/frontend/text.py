@@ -67,3 +67,15 @@ def check_narrative(text: str, name: str) -> None:
     english = sum(w in _ENGLISH for w in words)
     if len(words) >= 8 and english / len(words) < 0.08:
         raise FrontEndError(f"{name}: the report does not read as English; sovarc reads English narratives only")
+
+
+def unrepresented(text: str) -> list[str]:
+    """What the report says that the scenario IR cannot hold, named for the user instead of dropped silently."""
+    found: list[str] = []
+    if re.search(r"\b(?:pedalcyclist|bicyclist|cyclist|bicycle)s?\b", text, re.IGNORECASE):
+        found.append("a cyclist is represented as a pedestrian (the IR has no cyclist role)")
+    named = normalize_names(text)
+    impacts = [s for s in sentences(named) if _IMPACT.search(s) and re.search(r"\b[VP]\d\b", s)]
+    if len(impacts) > 1:
+        found.append(f"only the first impact is encoded; the report describes {len(impacts)} impact sentences")
+    return found

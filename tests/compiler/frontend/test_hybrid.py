@@ -1,0 +1,199 @@
+"""Hybrid extraction on recorded model answers: merging and cross-checks, the repair loop, defaults, the cache.
+
+`fixtures/answers/<report>.json` are the embedded model's real answers to our
+own example reports (recorded with `sovarc extract`, see fixtures/README.md);
+`fixtures/hybrid/<report>.sov` are the scenarios they give, as golden files.
+Broken answers below are written by hand to stand for a model gone wrong.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd, FrontEndError
+from sovarc.compiler.frontend.cache import CachedProvider
+from sovarc.compiler.frontend.defaults import apply_defaults
+from sovarc.compiler.frontend.hybrid import AnswerError, merge, parse_answer
+from sovarc.compiler.frontend.providers import ProviderError
+from sovarc.compiler.frontend.rules import extract
+from sovarc.dsl import read_source, to_text, verify
+from sovarc.dsl.ir import UNKNOWN, Crash, CrashType, Heading, Participant, Road, Role, Scenario
+from sovarc.dsl.span import Source
+
+from tests.conftest import EXAMPLES, Golden
+
+FIXTURES = Path(__file__).parent / "fixtures"
+RECORDED = sorted((FIXTURES / "answers").glob("*.json"))
+LEFT_TURN = EXAMPLES / "reports" / "left_turn_oncoming_pickup.txt"
+GOOD = (
+    '{"participants":{"V1":{"actions":["follow_lane","turn_left"]},"V2":{"actions":["follow_lane"]}},'
+    '"crash":{"type":"side","striker":"V2","victim":"V1"}}'
+)
+
+
+class Recorded:
+    """A provider that plays back recorded answers in order and keeps the prompts it was given."""
+
+    name = "recorded"
+    model = "recorded-answers"
+
+    def __init__(self, *answers: str) -> None:
+        self.answers = list(answers)
+        self.prompts: list[str] = []
+
+    def complete_json(self, system: str, user: str, schema: dict[str, Any], *, max_tokens: int) -> str:
+        self.prompts.append(user)
+        if not self.answers:
+            raise ProviderError("no recorded answer left")
+        return self.answers.pop(0)
+
+
+def _front_end(*answers: str) -> tuple[FrontEnd, Recorded]:
+    recorded = Recorded(*answers)
+    return FrontEnd("embedded", use_cache=False).use(recorded), recorded
+
+
+@pytest.mark.parametrize("answer", RECORDED, ids=lambda p: p.stem)
+def test_recorded_answers_give_the_golden_scenarios(answer: Path, golden: Golden) -> None:
+    report = EXAMPLES / "reports" / f"{answer.stem}.txt"
+    front_end, _ = _front_end(*json.loads(answer.read_text())["answers"])
+    got = front_end.extract(read_source(str(report.relative_to(EXAMPLES.parent)), "crash report"))
+    assert [d for d in verify(got.scenario) if d.severity == "error"] == []
+    golden.check(FIXTURES / "hybrid" / f"{answer.stem}.sov", to_text(got.scenario))
+
+
+def test_there_are_recorded_answers_for_every_example_report() -> None:
+    assert {p.stem for p in RECORDED} == {p.stem for p in (EXAMPLES / "reports").glob("*.txt")}
+
+
+def test_a_garbage_answer_is_repaired_with_the_problem_named() -> None:
+    front_end, recorded = _front_end("V1 turned left, I think.", GOOD)
+    got = front_end.extract(read_source(str(LEFT_TURN), "crash report"))
+    assert "the answer is not JSON" in recorded.prompts[1] and "V1 turned left, I think." in recorded.prompts[1]
+    assert "the model's answer was repaired in 1 round(s)" in got.notes
+    assert [a.kind for a in got.scenario.participant("V1").known_actions] == ["follow_lane", "turn_left"]
+
+
+def test_verifier_errors_go_back_to_the_model() -> None:
+    self_strike = GOOD.replace('"victim":"V1"', '"victim":"V2"')
+    front_end, recorded = _front_end(self_strike, GOOD)
+    unstated = "At the intersection V1 was westbound and turned left. V2 was eastbound. V1 and V2 collided."
+    got = front_end.extract(Source("r.txt", unstated))
+    assert "'V2' cannot strike itself" in recorded.prompts[1]
+    assert got.scenario.crash == Crash(CrashType.SIDE, "V2", "V1")
+
+
+def test_the_repair_loop_is_bounded_and_then_the_rules_reading_stands() -> None:
+    front_end, recorded = _front_end("{", "{", "{", GOOD)
+    got = front_end.extract(read_source(str(LEFT_TURN), "crash report"))
+    assert len(recorded.prompts) == 3 and recorded.answers == [GOOD]
+    assert any("no usable answer after 2 repair round(s)" in note for note in got.notes)
+    rules = apply_defaults(extract(LEFT_TURN.read_text(), "left_turn_oncoming_pickup", str(LEFT_TURN)))
+    assert got.scenario.participants == rules.participants
+
+
+def test_schema_violations_are_named_by_path() -> None:
+    flying = json.loads(GOOD)
+    flying["participants"]["V1"]["actions"] = ["fly"]
+    del flying["crash"]["type"]
+    with pytest.raises(AnswerError) as caught:
+        parse_answer(json.dumps(flying), ["V1", "V2"])
+    assert any(p.startswith("crash: 'type' is a required property") for p in caught.value.problems)
+    assert any(p.startswith("participants/V1/actions/0: 'fly' is not one of") for p in caught.value.problems)
+
+
+def test_a_crash_the_report_states_outright_wins_over_the_model() -> None:
+    rules = Scenario(
+        "s",
+        road=Road(lanes=4),
+        participants=(Participant("V1", Role.VEHICLE, Heading.NORTH, 1), Participant("V2", Role.VEHICLE)),
+        crash=Crash(CrashType.REAR_END, "V1", "V2"),
+    )
+    answer = parse_answer(GOOD, ["V1", "V2"])
+    merged, notes = merge(rules, answer, explicit_crash=True)
+    assert merged.crash == rules.crash
+    assert notes == ["crash: the report states rear_end by V1 into V2, the model read side by V2 into V1"]
+    assert merged.participant("V1").heading == Heading.NORTH and merged.participant("V1").lane == 1
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "turn_left"]
+    unstated, quiet = merge(rules, answer, explicit_crash=False)
+    assert unstated.crash == Crash(CrashType.SIDE, "V2", "V1") and quiet == []
+
+
+def test_defaults_are_recorded_as_assumed() -> None:
+    actions = parse_answer(GOOD, ["V1", "V2"]).actions
+    s = Scenario(
+        "s",
+        road=Road(lanes=2),
+        participants=(
+            Participant("V1", Role.VEHICLE, actions=actions["V1"]),
+            Participant("V2", Role.VEHICLE, lane=1, actions=actions["V2"]),
+        ),
+        crash=Crash(CrashType.SIDE, "V2"),
+    )
+    filled = apply_defaults(s)
+    assert filled.participant("V1").lane == 1 and filled.crash.victim == "V1"
+    assert filled.provenance is not None and filled.provenance.assumed == ("V1.lane", "crash.victim")
+    assert apply_defaults(replace_lanes(s, UNKNOWN)).participant("V1").lane == UNKNOWN
+
+
+def replace_lanes(s: Scenario, lanes: object) -> Scenario:
+    from dataclasses import replace
+
+    return replace(s, road=replace(s.road, lanes=lanes))
+
+
+def test_answers_are_cached_and_a_rerun_is_byte_identical(tmp_path: Path) -> None:
+    recorded = Recorded(GOOD)
+    cached = CachedProvider(recorded, tmp_path)
+    first = FrontEnd("embedded").use(cached).extract(read_source(str(LEFT_TURN), "crash report"))
+    again = FrontEnd("embedded").use(CachedProvider(Recorded(), tmp_path))  # no answers: it must not be asked
+    second = again.extract(read_source(str(LEFT_TURN), "crash report"))
+    assert to_text(first.scenario) == to_text(second.scenario)
+    assert (cached.misses, len(list(tmp_path.rglob("*.json")))) == (1, 1)
+    another = Recorded()
+    another.model = "another-model"  # a different model is a different key: it is asked, and has no answer
+    with pytest.raises(ProviderError, match="no recorded answer left"):
+        FrontEnd("embedded").use(CachedProvider(another, tmp_path)).extract(read_source(str(LEFT_TURN), "crash report"))
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (
+            "Das Fahrzeug fuhr nach Norden und die Fahrerin bremste zu spät vor der Kreuzung im Regen.",
+            "not read as English",
+        ),
+        ("The weather was clear and the road was dry at the time of the crash on the bridge.", "names no vehicle"),
+        ("1234 5678 ---- ####", "no words"),
+    ],
+)
+def test_bad_reports_get_one_clear_error(text: str, message: str) -> None:
+    front_end, recorded = _front_end(GOOD)
+    with pytest.raises(FrontEndError, match=message):
+        front_end.extract(Source("r.txt", text))
+    assert recorded.prompts == []  # nothing was asked of the model
+
+
+def test_an_unreachable_endpoint_is_a_clear_error() -> None:
+    from sovarc.compiler.frontend.providers.openai_compat import OpenAIProvider
+
+    provider = OpenAIProvider("any", base_url="http://127.0.0.1:9/v1", timeout_s=5, retries=0)
+    with pytest.raises(ProviderError, match=r"cannot reach the OpenAI-compatible endpoint http://127.0.0.1:9/v1"):
+        provider.complete_json("s", "u", {"type": "object"}, max_tokens=8)
+
+
+def test_what_the_ir_cannot_hold_is_named() -> None:
+    text = (
+        "V1 was northbound on the road. P1, a bicyclist, was riding across. The front of V1 struck P1. "
+        "V1 then struck a parked car."
+    )
+    front_end, _ = _front_end(
+        '{"participants":{"V1":{"actions":["follow_lane"]},"P1":{"actions":["cross"]}},'
+        '"crash":{"type":"side","striker":"V1","victim":"P1"}}'
+    )
+    notes = front_end.extract(Source("r.txt", text)).notes
+    assert "a cyclist is represented as a pedestrian (the IR has no cyclist role)" in notes
+    assert "only the first impact is encoded; the report describes 2 impact sentences" in notes
