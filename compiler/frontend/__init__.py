@@ -11,6 +11,7 @@ defaults pass, which records every fact it fills in.
 
 from __future__ import annotations
 
+import argparse
 import hashlib
 import importlib.util
 from dataclasses import dataclass, field, replace
@@ -41,10 +42,10 @@ def default_llm() -> str:
 
 
 def check_llm(value: str) -> str:
-    """Validate an --llm value; ValueError with the choices when it is not one."""
+    """Validate an --llm value (an argparse type): the error names the choices."""
     if value in ("embedded", "none") or (value.startswith("openai:") and len(value) > len("openai:")):
         return value
-    raise ValueError(f"invalid --llm {value!r}: choose from {', '.join(LLM_CHOICES)}")
+    raise argparse.ArgumentTypeError(f"invalid --llm {value!r}: choose from {', '.join(LLM_CHOICES)}")
 
 
 def scenario_name(path: str) -> str:
