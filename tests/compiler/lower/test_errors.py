@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 
 import pytest
@@ -114,3 +115,23 @@ def test_a_bad_map_file_is_an_input_error_naming_the_file(
 def test_a_missing_map_file_is_an_input_error(tmp_path: Path) -> None:
     with pytest.raises(InputError, match="map file not found"):
         load_map(tmp_path / "nowhere.net.xml")
+
+
+@pytest.mark.slow  # loads the DRT city network (about 2 s)
+def test_a_lane_shift_on_a_short_city_arm_is_a_lowering_error_not_a_crash() -> None:
+    """Ground truth t/19 on SUMO's DRT city, junction 1677246221: the arm before the junction is shorter
+    than a lane shift, `Drive.shift_to` blends from arc length 0 and `Polyline` raises ValueError
+    ('a polyline needs two distinct points'). Lowering must fail with a SovarcError (or succeed)."""
+    import sumo
+    from sovarc.compiler.frontend.truth import import_truth_file
+    from sovarc.compiler.lower import lower_on
+    from sovarc.compiler.lower.assume import assume
+    from sovarc.dsl.errors import SovarcError
+
+    from tests.conftest import SHARED
+
+    city = load_map(Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml")
+    staged, notes = assume(import_truth_file(SHARED / "data" / "nmvccs" / "truth" / "t" / "19.json").scenario)
+    match = next(m for m in match_sites(staged, city, n=3, seed=0, clamp=True) if m.site.id == "junction:1677246221")
+    with contextlib.suppress(SovarcError):  # an error that names the problem is fine; a ValueError is not
+        lower_on(staged, match, city, notes)
