@@ -16,6 +16,7 @@ import numpy as np
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat
 from sovarc.compiler.lower.route import change_length, unit
 from sovarc.compiler.maps import Arm, LaneInfo
+from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
@@ -103,9 +104,15 @@ class Drive:
 
     def shift_to(self, number: int) -> None:
         """Change to lane `number` just before the end of the road (to reach a junction connection)."""
-        target = self._target(number, False)
         end = self.line.length - 3.0
         start = max(0.0, end - change_length(self.speed))
+        if end - start < 8.0:
+            raise LoweringError(
+                Diagnostic(
+                    f"lane {self.corridor.own[0].edge} is {self.line.length:.0f} m long: too short to change lanes"
+                )
+            )
+        target = self._target(number, False)
         self.line = blend(self.line, target, start, end)
 
     def retrograde(self, index: int, at: float) -> float:

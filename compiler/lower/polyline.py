@@ -109,7 +109,7 @@ def blend(first: Polyline, second: Polyline, start: float, end: float) -> Polyli
     Both polylines run side by side (two lanes of one road); arc lengths are `first`'s.
     The sideways move follows a smoothstep, as a lane change does.
     """
-    before = first.sub(0.0, start).points
+    before = first.sub(0.0, start).points if start > 0.5 else first.points[:1]
     steps = np.linspace(start, end, max(3, math.ceil((end - start) / 2.0) + 1))
     middle = []
     for s in steps:
@@ -119,7 +119,7 @@ def blend(first: Polyline, second: Polyline, start: float, end: float) -> Polyli
         b = np.asarray(second.point(second.project(first.point(s))[0]))
         middle.append((1.0 - w) * a + w * b)
     tail_start = second.project(first.point(end))[0]
-    after = second.sub(tail_start, second.length).points
+    after = second.sub(tail_start, second.length).points if second.length - tail_start > 0.5 else second.points[-1:]
     return Polyline(np.vstack([before, np.asarray(middle), after]))
 
 
