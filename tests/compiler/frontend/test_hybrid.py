@@ -20,7 +20,7 @@ from sovarc.compiler.frontend.hybrid import AnswerError, merge, parse_answer
 from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.rules import extract
 from sovarc.dsl import read_source, to_text, verify
-from sovarc.dsl.ir import UNKNOWN, Crash, CrashType, Heading, Participant, Road, Role, Scenario
+from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Crash, CrashType, Heading, Participant, Road, Role, Scenario
 from sovarc.dsl.span import Source
 
 from tests.conftest import EXAMPLES, Golden
@@ -105,21 +105,29 @@ def test_schema_violations_are_named_by_path() -> None:
     assert any(p.startswith("participants/V1/actions/0: 'fly' is not one of") for p in caught.value.problems)
 
 
-def test_a_crash_the_report_states_outright_wins_over_the_model() -> None:
+def test_cross_checks_take_each_fact_from_its_better_reader() -> None:
     rules = Scenario(
         "s",
         road=Road(lanes=4),
-        participants=(Participant("V1", Role.VEHICLE, Heading.NORTH, 1), Participant("V2", Role.VEHICLE)),
+        participants=(
+            Participant("V1", Role.VEHICLE, Heading.NORTH, 1, actions=(Action(ActionKind.FOLLOW_LANE),)),
+            Participant("V2", Role.VEHICLE, actions=(Action(ActionKind.FOLLOW_LANE),)),
+        ),
         crash=Crash(CrashType.REAR_END, "V1", "V2"),
     )
     answer = parse_answer(GOOD, ["V1", "V2"])
     merged, notes = merge(rules, answer, explicit_crash=True)
-    assert merged.crash == rules.crash
-    assert notes == ["crash: the report states rear_end by V1 into V2, the model read side by V2 into V1"]
+    # a crash type the report states outright is the rules'; who struck whom is the model's
+    assert merged.crash == Crash(CrashType.REAR_END, "V2", "V1")
+    assert "crash: the report states rear_end, the model read side" in notes
+    # headings and lanes stay the rules'
     assert merged.participant("V1").heading == Heading.NORTH and merged.participant("V1").lane == 1
-    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "turn_left"]
-    unstated, quiet = merge(rules, answer, explicit_crash=False)
-    assert unstated.crash == Crash(CrashType.SIDE, "V2", "V1") and quiet == []
+    # the model's actions are kept only where they name the same actions as the rules' reading
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane"]
+    assert "V1 actions: the model read [follow_lane, turn_left], the rules [follow_lane]; kept the rules" in notes
+    assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane"]
+    unstated, _ = merge(rules, answer, explicit_crash=False)
+    assert unstated.crash == Crash(CrashType.SIDE, "V2", "V1")
 
 
 def test_defaults_are_recorded_as_assumed() -> None:
