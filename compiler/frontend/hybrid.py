@@ -22,7 +22,6 @@ from typing import Any
 import jsonschema
 from sovarc.compiler.frontend import prompting
 from sovarc.compiler.frontend.providers.base import Provider
-from sovarc.compiler.frontend.rules import crash_is_stated
 from sovarc.dsl import verify
 from sovarc.dsl.errors import Severity
 from sovarc.dsl.ir import (
@@ -92,15 +91,15 @@ def _dedupe(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     return tuple(out)
 
 
-def merge(rules: Scenario, answer: Answer, explicit_crash: bool) -> tuple[Scenario, list[str]]:
+def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
     """The rules' reading with the model's merged in; notes name each disagreement and which reading was kept.
 
     Each fact comes from the reader that gets it right more often (measured on the NMVCCS reports, see the
     README): the rules keep the environment, the road, headings and lanes. Actions are cross-checked: the
     model's sequence is kept when it names the same actions as the rules' reading (it orders and repeats them
     better), else the rules' reading stands, since the small model adds actions the report does not state.
-    The crash type is the rules' when a sentence states it outright ("the front of V1 struck the rear of V2":
-    `explicit_crash`), else the model's; who struck whom is the model's, which reads it better.
+    The crash type is the rules' when a sentence states it outright ("the front of V1 struck the rear of V2",
+    "head-on"), else the model's; who struck whom is the model's, which reads it better.
     """
     notes: list[str] = []
     people = []
@@ -113,8 +112,9 @@ def merge(rules: Scenario, answer: Answer, explicit_crash: bool) -> tuple[Scenar
                 f"{p.id} actions: the model read {_words(modelled)}, the rules {_words(ruled)}; kept the rules"
             )
         people.append(p)
-    crash = rules.crash if explicit_crash else replace(rules.crash, type=answer.crash.type)
-    if explicit_crash and rules.crash.type != answer.crash.type:
+    stated = not isinstance(rules.crash.type, Unknown)
+    crash = rules.crash if stated else replace(rules.crash, type=answer.crash.type)
+    if stated and rules.crash.type != answer.crash.type:
         notes.append(f"crash: the report states {rules.crash.type}, the model read {answer.crash.type}")
     if not isinstance(answer.crash.striker, Unknown):
         crash = replace(crash, striker=answer.crash.striker, victim=answer.crash.victim)
@@ -134,7 +134,6 @@ def model_reading(
 ) -> tuple[Scenario, list[str]]:
     """The rules' scenario with the model's reading merged in, repaired until it verifies."""
     ids = [p.id for p in rules.participants]
-    explicit_crash = crash_is_stated(text)
     narrative = prompting.prepared_narrative(text)
     system = prompting.system_prompt()
     schema = prompting.answer_schema(ids)
@@ -143,7 +142,7 @@ def model_reading(
     for attempt in range(max_repairs + 1):
         answer_text = provider.complete_json(system, user, schema, max_tokens=prompting.answer_budget(ids))
         try:
-            merged, notes = merge(rules, parse_answer(answer_text, ids), explicit_crash)
+            merged, notes = merge(rules, parse_answer(answer_text, ids))
             problems = [d.message for d in verify(merged) if d.severity is Severity.ERROR]
         except AnswerError as exc:
             problems = exc.problems

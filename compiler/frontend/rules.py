@@ -246,13 +246,6 @@ _PART = {
 }
 
 
-def crash_is_stated(text: str) -> bool:
-    """Whether a sentence says outright which part of whom struck which part of whom."""
-    sents = sentences(normalize_names(text))
-    before = up_to_first_impact(sents)
-    return any(_STRIKE.search(s) for s in (before if len(before) < len(sents) else sents))
-
-
 def extract_crash(sents: list[str]) -> Crash:
     for s in sents:
         m = _STRIKE.search(s)

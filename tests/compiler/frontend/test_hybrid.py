@@ -9,6 +9,7 @@ Broken answers below are written by hand to stand for a model gone wrong.
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -116,7 +117,7 @@ def test_cross_checks_take_each_fact_from_its_better_reader() -> None:
         crash=Crash(CrashType.REAR_END, "V1", "V2"),
     )
     answer = parse_answer(GOOD, ["V1", "V2"])
-    merged, notes = merge(rules, answer, explicit_crash=True)
+    merged, notes = merge(rules, answer)
     # a crash type the report states outright is the rules'; who struck whom is the model's
     assert merged.crash == Crash(CrashType.REAR_END, "V2", "V1")
     assert "crash: the report states rear_end, the model read side" in notes
@@ -126,7 +127,7 @@ def test_cross_checks_take_each_fact_from_its_better_reader() -> None:
     assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane"]
     assert "V1 actions: the model read [follow_lane, turn_left], the rules [follow_lane]; kept the rules" in notes
     assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane"]
-    unstated, _ = merge(rules, answer, explicit_crash=False)
+    unstated, _ = merge(replace(rules, crash=Crash()), answer)
     assert unstated.crash == Crash(CrashType.SIDE, "V2", "V1")
 
 
@@ -148,8 +149,6 @@ def test_defaults_are_recorded_as_assumed() -> None:
 
 
 def replace_lanes(s: Scenario, lanes: object) -> Scenario:
-    from dataclasses import replace
-
     return replace(s, road=replace(s.road, lanes=lanes))
 
 
