@@ -41,7 +41,7 @@ def test_help_examples_name_real_files_and_stages() -> None:
         for path in re.findall(r"(examples/[\w/.-]+\.(?:sov|txt))", text):
             assert (EXAMPLES.parent / path).exists(), path
         for stage in re.findall(r"--dump-ir-after=(\w+)", text):
-            assert stage in STAGE_NAMES, stage
+            assert stage in (*STAGE_NAMES, "lower"), stage
 
 
 def test_no_command_is_a_usage_error() -> None:
@@ -167,9 +167,26 @@ def test_main_job_runs_the_pipeline_and_dumps_ir(tmp_path: Path) -> None:
     assert sovarc(str(LEFT_TURN), "--dump-ir-after=nope").returncode == 2
 
 
-def test_main_job_says_what_is_not_built(tmp_path: Path) -> None:
-    target = sovarc(str(LEFT_TURN), "-t", "sumo")
-    assert target.returncode == 2 and "unknown target 'sumo'" in target.stderr
+@pytest.mark.slow
+def test_main_job_stages_emits_and_checks_a_target(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    result = sovarc(str(LEFT_TURN), "-t", "sumo", "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[0].split() == ["site", "impact", "sumo"]
+    assert result.stdout.splitlines()[1].endswith("pass")
+    (site,) = [p for p in out.iterdir() if p.is_dir()]
+    for name in ("plan.txt", "plan.json", "plan.png", "verdict-sumo.json", "sumo/scenario.sumocfg"):
+        assert (site / name).is_file(), name
+    assert json.loads((site / "verdict-sumo.json").read_text())["passed"] is True
+    again = tmp_path / "again"
+    assert sovarc(str(LEFT_TURN), "-t", "sumo", "-o", str(again)).returncode == 0
+    assert (again / site.name / "plan.json").read_bytes() == (site / "plan.json").read_bytes()  # deterministic
+
+
+def test_main_job_names_its_mistakes(tmp_path: Path) -> None:
+    target = sovarc(str(LEFT_TURN), "-t", "carla", "-o", str(tmp_path / "x"))
+    assert target.returncode == 2 and "unknown target 'carla'" in target.stderr
+    assert not (tmp_path / "x").exists()
     pdf = tmp_path / "r.pdf"
     pdf.write_text("V1 struck V2.")
     kind = sovarc(str(pdf))
