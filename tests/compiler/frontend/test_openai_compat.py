@@ -64,7 +64,7 @@ def test_a_real_local_server_answers_in_the_compact_form(server_url: str) -> Non
         SYSTEM, REPORT, prompting.answer_schema(ids), max_tokens=prompting.answer_budget(ids)
     )
     parsed = parse_answer(answer, ids)  # the server enforced the schema: it parses
-    assert set(parsed.participants) == {"V1", "V2"}
+    assert set(parsed.actions) == {"V1", "V2"}
     provider.close()
 
 
