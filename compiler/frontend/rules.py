@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import re
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from sovarc.compiler.frontend.text import normalize_names, participants, sentences, up_to_first_impact
 from sovarc.dsl.ir import (
@@ -66,7 +66,9 @@ _ACTION_PATTERNS: list[tuple[ActionKind, str]] = [
         ActionKind.RETROGRADE,
         r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
         r"|\binto the (?:opposing|oncoming) (?:lane|traffic)|\bwrong (?:way|side)\b"
-        r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))",
+        r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
+        r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
+        r"|\bcrossed over\b(?! the (?:curb|median))",
     ),
     (
         ActionKind.DRIVE_INTO,
@@ -86,6 +88,20 @@ _ACTION_PATTERNS: list[tuple[ActionKind, str]] = [
         r"|\bslowed to a stop\b|\bwaiting\b|\bstationary\b",
     ),
 ]
+# Words that say a participant was moving, and a crossing after a stop; used for ordering, not as actions alone.
+_TRAVELLING = re.compile(
+    r"\b(?:travel(?:l)?(?:ed|ing)|approach(?:ed|ing)|driving|proceed(?:ed|ing)|head(?:ed|ing))\b", re.I
+)
+_CROSSING_AFTER_STOP = re.compile(
+    r"\b(?:proceed(?:ed|ing)|pull(?:ed|ing)|drove|continu(?:ed|ing)|enter(?:ed|ing)|accelerat(?:ed|ing))\b"
+    r"(?: \w+){0,3} (?:into|through|across) the intersection|\battempt(?:ed|ing) to cross\b",
+    re.IGNORECASE,
+)
+_PRECRASH_LEFT = re.compile(
+    r"critical pre-?crash event\b[^.]*?\b(V\d)\b[^.]*?\b(?:over the lane line on (?:the )?left side|"
+    r"lane line on left side|cross(?:ed|ing)? (?:the )?cent(?:er|re) ?line|left of cent(?:er|re))",
+    re.IGNORECASE,
+)
 _INTENDED = re.compile(
     r"\b(?:intend(?:ed|ing|s)? (?:to|on)|planning to|planned to|wanted to|was going to|in order to)\b[^.,;]*",
     re.IGNORECASE,
@@ -165,6 +181,8 @@ class _Reading:
     lane: int | Unknown = UNKNOWN
     speed: Speed | Unknown = UNKNOWN
     actions: list[tuple[int, Action]] | None = None
+    travelling_at: float = float("inf")  # where the text first says it was moving
+    crossings: list[int] = field(default_factory=list)  # where it says it crossed the intersection
 
 
 def _segments(sents: list[str], ids: list[str]) -> dict[str, list[str]]:
@@ -200,6 +218,10 @@ def _read_participant(chunks: list[str], lanes: int | Unknown) -> _Reading:
                         continue
                     to = Side(side.group(1).lower())
                 reading.actions.append((offset + m.start(), Action(kind, to)))
+        if (m := _TRAVELLING.search(done)) is not None:
+            reading.travelling_at = min(reading.travelling_at, offset + m.start())
+        for m in _CROSSING_AFTER_STOP.finditer(done):
+            reading.crossings.append(offset + m.start())
         offset += len(chunk) + 1
     return reading
 
@@ -216,16 +238,26 @@ def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
     return UNKNOWN
 
 
-def _ordered_actions(found: list[tuple[int, Action]]) -> tuple[Action, ...]:
+def _ordered_actions(reading: _Reading) -> tuple[Action, ...]:
+    found = list(reading.actions or [])
+    stops = [at for at, a in found if a.kind is ActionKind.STOP]
+    if stops and not any(a.kind in _MANOEUVRES for at, a in found if at > stops[0]):
+        # stopped at a sign or signal, then drove on across the intersection
+        found += [(at, Action(ActionKind.GO_ACROSS)) for at in reading.crossings if at > stops[0]][:1]
     ordered: list[Action] = []
     for _, action in sorted(found, key=lambda item: item[0]):
         if not ordered or ordered[-1] != action:
             ordered.append(action)
-    # A vehicle drives in its lane before whatever it does, unless it stood still or came
-    # from off the road (the ground truth's convention).
-    if not ordered or ordered[0].kind not in (ActionKind.STOP, ActionKind.DRIVE_INTO):
+    # A vehicle drives in its lane before whatever it does, unless it stood still or came from off the road
+    # (the ground truth's convention); one the report first shows moving, then stopping, drove first.
+    first_at = min((at for at, _ in found), default=float("inf"))
+    standing = ordered and ordered[0].kind in (ActionKind.STOP, ActionKind.DRIVE_INTO)
+    if not standing or (ordered[0].kind is ActionKind.STOP and reading.travelling_at < first_at):
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
     return tuple(ordered)
+
+
+_MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.GO_ACROSS, ActionKind.U_TURN)
 
 
 _STRIKE = re.compile(
@@ -273,6 +305,19 @@ _SAME_WAY = re.compile(
 )
 
 
+def _precrash_retrograde(sents: list[str], people: list[Participant]) -> list[Participant]:
+    """The database's coded pre-crash event ("travelling over the lane line on the left side"), often written
+    after the impact, says a vehicle went into the opposing lane."""
+    wrong_way = {m.group(1) for s in sents if (m := _PRECRASH_LEFT.search(s))}
+    out = []
+    for p in people:
+        kinds = [a.kind for a in p.known_actions]
+        if p.id in wrong_way and ActionKind.RETROGRADE not in kinds and kinds[:1] == [ActionKind.FOLLOW_LANE]:
+            p = replace(p, actions=(*p.known_actions, Action(ActionKind.RETROGRADE)))
+        out.append(p)
+    return out
+
+
 def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
     """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... in the same direction
     behind V2"."""
@@ -304,9 +349,10 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     for pid in ids:
         r = _read_participant(chunks[pid], lanes)
         role = Role.PEDESTRIAN if pid.startswith("P") else Role.VEHICLE
-        actions = (Action(ActionKind.CROSS),) if role is Role.PEDESTRIAN else _ordered_actions(r.actions or [])
+        actions = (Action(ActionKind.CROSS),) if role is Role.PEDESTRIAN else _ordered_actions(r)
         people.append(Participant(pid, role, r.heading, r.lane, r.speed, actions))
     people = _shared_headings(before, people)
+    people = _precrash_retrograde(sents, people)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
         name,
