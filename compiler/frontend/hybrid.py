@@ -30,6 +30,8 @@ from sovarc.dsl.ir import (
     ActionKind,
     Crash,
     CrashType,
+    Heading,
+    Role,
     Scenario,
     Side,
     Unknown,
@@ -116,9 +118,27 @@ def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
     crash = rules.crash if stated else replace(rules.crash, type=answer.crash.type)
     if stated and rules.crash.type != answer.crash.type:
         notes.append(f"crash: the report states {rules.crash.type}, the model read {answer.crash.type}")
+    if not stated and (fixed := _geometry_check(rules, crash.type)) is not None:
+        notes.append(f"crash: the model read {crash.type}, but the headings make it {fixed}; kept {fixed}")
+        crash = replace(crash, type=fixed)
     if not isinstance(answer.crash.striker, Unknown):
         crash = replace(crash, striker=answer.crash.striker, victim=answer.crash.victim)
     return replace(rules, participants=tuple(people), crash=crash), notes
+
+
+_AXIS = {Heading.NORTH: 0, Heading.SOUTH: 0, Heading.EAST: 1, Heading.WEST: 1}
+
+
+def _geometry_check(rules: Scenario, said: CrashType | Unknown) -> CrashType | None:
+    """A rear-end crash needs two vehicles heading the same way: with crossing headings it is a side crash,
+    with opposite ones (and no turn) a frontal one. None when the headings do not contradict the type."""
+    vehicles = [p for p in rules.participants if p.role is Role.VEHICLE]
+    if said is not CrashType.REAR_END or len(vehicles) != 2:
+        return None
+    a, b = (p.heading for p in vehicles)
+    if isinstance(a, Unknown) or isinstance(b, Unknown) or a == b:
+        return None
+    return CrashType.SIDE if _AXIS[a] != _AXIS[b] else CrashType.FRONTAL
 
 
 def _words(actions: tuple[Action, ...]) -> str:

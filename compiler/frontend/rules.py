@@ -260,11 +260,13 @@ def _ordered_actions(reading: _Reading) -> tuple[Action, ...]:
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.GO_ACROSS, ActionKind.U_TURN)
 
 
+# The part of the struck participant; "the right front side" is a side.
+_STRUCK_PART = r"(?:(?:left|right) )?(?:front|rear) (?:(?:left|right) )?side|front|rear|back|side|end"
 _STRIKE = re.compile(
     r"front(?: \w+)? of (?P<a>[VP]\d)\b[^.]*?\b(?:struck|impacted|contacted|hit|strik\w+|collided with)\b[^.]*?"
-    r"(?P<part>front|rear|back|side|end)\b[^.]*?\b(?P<b>[VP]\d)\b"
-    r"|(?P<a2>[VP]\d)\b[^.]*?\b(?:struck|impacted|contacted|hit|rear-ended|collided with)\b[^.]*?"
-    r"(?P<part2>front|rear|back|side|end)\b[^.]*?\b(?P<b2>[VP]\d)\b"
+    r"(?P<part>" + _STRUCK_PART + r")\b[^.]*?\b(?P<b>[VP]\d)\b"
+    r"|(?P<a2>[VP]\d)\b[^.]*?\b(?:struck|impacted|contacted|hit|rear-ended|collided with)\b(?! by)[^.]*?"
+    r"(?P<part2>" + _STRUCK_PART + r")\b[^.]*?\b(?P<b2>[VP]\d)\b"
     r"|(?P<b3>[VP]\d)\b[^.]*?(?P<part3>front|rear|back|side|end)\b[^.]*?\bwas (?:struck|impacted|contacted|hit) by"
     r" (?:the front of )?(?P<a3>[VP]\d)\b",
     re.IGNORECASE,
@@ -286,6 +288,7 @@ def extract_crash(sents: list[str]) -> Crash:
         a = m.group("a") or m.group("a2") or m.group("a3")
         b = m.group("b") or m.group("b2") or m.group("b3")
         part = (m.group("part") or m.group("part2") or m.group("part3")).lower()
+        part = "side" if part.endswith("side") else part
         if a != b:
             return Crash(_PART[part], a, b)
     if any(re.search(r"head[- ]on", s, re.IGNORECASE) for s in sents):

@@ -204,3 +204,17 @@ def test_what_the_ir_cannot_hold_is_named() -> None:
     notes = front_end.extract(Source("r.txt", text)).notes
     assert "a cyclist is represented as a pedestrian (the IR has no cyclist role)" in notes
     assert "only the first impact is encoded; the report describes 2 impact sentences" in notes
+
+
+def test_a_rear_end_answer_against_crossing_headings_becomes_a_side_crash() -> None:
+    rules = Scenario(
+        "s",
+        participants=(
+            Participant("V1", Role.VEHICLE, Heading.NORTH, actions=(Action(ActionKind.FOLLOW_LANE),)),
+            Participant("V2", Role.VEHICLE, Heading.EAST, actions=(Action(ActionKind.FOLLOW_LANE),)),
+        ),
+    )
+    rear = GOOD.replace('"type":"side"', '"type":"rear_end"')
+    merged, notes = merge(rules, parse_answer(rear, ["V1", "V2"]))
+    assert merged.crash.type == CrashType.SIDE
+    assert "crash: the model read rear_end, but the headings make it side; kept side" in notes
