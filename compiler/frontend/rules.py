@@ -321,6 +321,18 @@ def _precrash_retrograde(sents: list[str], people: list[Participant]) -> list[Pa
     return out
 
 
+_SCENE = re.compile(r"\boccurred (?:in|on|within) the (north|south|east|west)bound (?:travel )?lanes?\b", re.IGNORECASE)
+
+
+def _scene_heading(text: str, people: list[Participant]) -> list[Participant]:
+    """ "The crash occurred in the southbound lanes": when no vehicle's own heading is stated, they all drove so."""
+    vehicles = [p for p in people if p.role is Role.VEHICLE]
+    m = _SCENE.search(text)
+    if m is None or not vehicles or not all(isinstance(p.heading, Unknown) for p in vehicles):
+        return people
+    return [replace(p, heading=Heading(m.group(1).lower())) if p.role is Role.VEHICLE else p for p in people]
+
+
 def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
     """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... in the same direction
     behind V2"."""
@@ -355,6 +367,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         actions = (Action(ActionKind.CROSS),) if role is Role.PEDESTRIAN else _ordered_actions(r)
         people.append(Participant(pid, role, r.heading, r.lane, r.speed, actions))
     people = _shared_headings(before, people)
+    people = _scene_heading(named, people)
     people = _precrash_retrograde(sents, people)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
