@@ -100,8 +100,8 @@ def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
     README): the rules keep the environment, the road, headings and lanes. Actions are cross-checked: the
     model's sequence is kept when it names the same actions as the rules' reading (it orders and repeats them
     better), else the rules' reading stands, since the small model adds actions the report does not state.
-    The crash type is the rules' when a sentence states it outright ("the front of V1 struck the rear of V2",
-    "head-on"), else the model's; who struck whom is the model's, which reads it better.
+    The crash is the rules' when a sentence states it outright ("the front of V1 struck the rear of V2"); else
+    (or for who struck whom after a bare "head-on") the model's, its type cross-checked against the headings.
     """
     notes: list[str] = []
     people = []
@@ -121,8 +121,10 @@ def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
     if not stated and (fixed := _geometry_check(rules, crash.type)) is not None:
         notes.append(f"crash: the model read {crash.type}, but the headings make it {fixed}; kept {fixed}")
         crash = replace(crash, type=fixed)
-    if not isinstance(answer.crash.striker, Unknown):
+    if isinstance(crash.striker, Unknown) and not isinstance(answer.crash.striker, Unknown):
         crash = replace(crash, striker=answer.crash.striker, victim=answer.crash.victim)
+    elif crash.striker != answer.crash.striker:
+        notes.append(f"crash: the report states {crash.striker} struck, the model read {answer.crash.striker}")
     return replace(rules, participants=tuple(people), crash=crash), notes
 
 

@@ -118,9 +118,10 @@ def test_cross_checks_take_each_fact_from_its_better_reader() -> None:
     )
     answer = parse_answer(GOOD, ["V1", "V2"])
     merged, notes = merge(rules, answer)
-    # a crash type the report states outright is the rules'; who struck whom is the model's
-    assert merged.crash == Crash(CrashType.REAR_END, "V2", "V1")
+    # a crash the report states outright is the rules'
+    assert merged.crash == Crash(CrashType.REAR_END, "V1", "V2")
     assert "crash: the report states rear_end, the model read side" in notes
+    assert "crash: the report states V1 struck, the model read V2" in notes
     # headings and lanes stay the rules'
     assert merged.participant("V1").heading == Heading.NORTH and merged.participant("V1").lane == 1
     # the model's actions are kept only where they name the same actions as the rules' reading
