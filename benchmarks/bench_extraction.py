@@ -33,12 +33,13 @@ def main() -> None:
     parser.add_argument("--llm-base-url", default=None)
     parser.add_argument("--data", type=Path, default=DATA)
     parser.add_argument("--answers", type=Path, default=None, help="answer cache folder (default: a fresh one)")
+    parser.add_argument("--limit", type=int, default=None, help="only the first N reports (a quick look)")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="sovarc-answers-") as fresh:
         front_end = FrontEnd(args.llm, args.model, args.llm_base_url, cache_dir=args.answers or Path(fresh))
         report, seconds = Report(), []
-        for truth_file in sorted((args.data / "truth").glob("*/*.json")):
+        for truth_file in sorted((args.data / "truth").glob("*/*.json"))[: args.limit]:
             text = args.data / "reports" / truth_file.parent.name / f"{truth_file.stem}.txt"
             truth = import_truth_file(truth_file).scenario
             start = time.perf_counter()
