@@ -234,7 +234,10 @@ def _build_parser() -> argparse.ArgumentParser:
             "Read crash reports (.txt) into scenarios. With one report and no -o the\n"
             "scenario is printed; otherwise each report gives DIR/<name>.sov.\n\n"
             "examples:\n  sovarc extract examples/reports/double_yellow_pass_frontal.txt\n"
-            "  sovarc extract ../shared/data/nmvccs/reports/t/*.txt -o out/t --llm none"
+            "  sovarc extract ../shared/data/nmvccs/reports/t/*.txt -o out/t --llm none\n"
+            "  sovarc extract REPORT.txt --llm openai:MODEL --llm-base-url http://127.0.0.1:8080/v1\n\n"
+            "Answers of a model are cached in ~/.cache/sovarc/answers; each disagreement between\n"
+            "the rules and the model, and each repair, is printed as a note."
         ),
     )
     ext.add_argument("reports", nargs="+", metavar="REPORT")
