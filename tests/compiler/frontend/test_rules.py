@@ -138,6 +138,9 @@ def test_eval_extraction_on_the_shared_reports() -> None:
     assert figures["accuracy"]["Weather"] >= 90
     assert figures["accuracy"]["CollisionLocation"] >= 95
     assert figures["accuracy"]["ParticipantsNumber"] >= 95
-    assert figures["accuracy"]["SpeedLimit"] >= 85
+    assert figures["accuracy"]["SpeedLimit"] >= 95
+    assert figures["accuracy"]["Light"] >= 95 and figures["accuracy"]["LaneNum"] >= 95
+    assert figures["accuracy"]["DrivingActions"] >= 50 and figures["accuracy"]["DrivingDirections"] >= 78
+    assert figures["mean"] >= 84
     table = sovarc("eval", "extraction", *where)
     assert "SoVAR GPT-4" in table.stdout and "failing fields" in table.stdout
