@@ -219,3 +219,17 @@ def test_a_rear_end_answer_against_crossing_headings_becomes_a_side_crash() -> N
     merged, notes = merge(rules, parse_answer(rear, ["V1", "V2"]))
     assert merged.crash.type == CrashType.SIDE
     assert "crash: the model read rear_end, but the headings make it side; kept side" in notes
+
+
+def test_an_endpoint_that_never_answers_times_out_with_a_clear_error() -> None:
+    import socket
+
+    from sovarc.compiler.frontend.providers.openai_compat import OpenAIProvider
+
+    with socket.socket() as silent:  # accepts connections (the kernel's backlog) and never says a word
+        silent.bind(("127.0.0.1", 0))
+        silent.listen(4)
+        url = f"http://127.0.0.1:{silent.getsockname()[1]}/v1"
+        provider = OpenAIProvider("any", base_url=url, timeout_s=1, retries=0)
+        with pytest.raises(ProviderError, match=f"the endpoint {url} did not answer in time"):
+            provider.complete_json("s", "u", {"type": "object"}, max_tokens=8)
