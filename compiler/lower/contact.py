@@ -17,7 +17,6 @@ to front), a side impact a crossing.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -43,10 +42,6 @@ class Contact:
 
     def victim_s(self, s: float) -> float:
         return self.offset + self.sign * s if self.sign else self.offset
-
-    @property
-    def point_s(self) -> float:
-        return (self.lo + self.hi) / 2.0
 
 
 def contacts(striker: Route, victim: Route, crash: CrashType) -> list[Contact]:
@@ -143,7 +138,3 @@ def describe(c: Contact) -> str:
     if c.kind == "crossing":
         return f"paths cross at {c.angle:.0f} degrees"
     return f"paths share {c.hi - c.lo:.0f} m of lane, {'same' if c.sign == 1 else 'opposite'} direction"
-
-
-def is_close(a: float, b: float) -> bool:
-    return math.isclose(a, b, abs_tol=1e-6)

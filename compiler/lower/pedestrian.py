@@ -9,8 +9,6 @@ behind or head-on) walks in the vehicle's lane, a little right of its centre lin
 
 from __future__ import annotations
 
-import math
-
 from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.route import Event, Route, order_stops, unit
 from sovarc.compiler.maps import SiteMatch
@@ -68,7 +66,3 @@ def pedestrian_route(
 
 def walking_speed(reported: float | None) -> float:
     return reported if reported is not None and 0.3 <= reported <= 4.0 else 1.4
-
-
-def cross_angle(a: float, b: float) -> float:
-    return abs(math.remainder(a - b, 360.0))

@@ -71,10 +71,6 @@ def change_length(speed: float) -> float:
     return max(MIN_CHANGE, CHANGE_TIME * speed)
 
 
-def first_move(actions: tuple[Action, ...], kinds: frozenset[ActionKind]) -> int | None:
-    return next((k for k, a in enumerate(actions) if a.kind in kinds), None)
-
-
 def stop_range(before: float, after: float) -> tuple[float, float]:
     """A stop between the end of one stretch and the start of the next."""
     lo, hi = before + 1.0, after - 1.0

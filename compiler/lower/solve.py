@@ -74,7 +74,6 @@ class Motion:
     initial_dwell: Any | None
     legs: list[Leg] = field(default_factory=list)
     dwells: list[Any] = field(default_factory=list)  # after legs[i] when it ends at rest
-    impact_leg: int | None = None
     impact_s: Any | None = None
     stopped_at_impact: bool = False
 
@@ -261,7 +260,6 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
 def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool) -> None:
     """The participant is at arc length s at time t_hit, cruising on its last leg."""
     leg = motion.legs[-1]
-    motion.impact_leg = len(motion.legs) - 1
     ramp = leg.v * leg.v / (2 * A_UP) if leg.from_rest else 0
     lead = LEAD if motion.route.participant.role is Role.VEHICLE else 2.0
     need(f"{pid}.route", s - leg.start >= ramp + (0.0 if leg.from_rest else lead))
