@@ -13,8 +13,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat
-from sovarc.compiler.lower.route import change_length, unit
+from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
+from sovarc.compiler.lower.route import change_length
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side

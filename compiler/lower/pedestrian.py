@@ -9,8 +9,8 @@ behind or head-on) walks in the vehicle's lane, a little right of its centre lin
 
 from __future__ import annotations
 
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.lower.route import Event, Route, order_stops, unit
+from sovarc.compiler.lower.polyline import Polyline, unit
+from sovarc.compiler.lower.route import Event, Route, order_stops
 from sovarc.compiler.maps import SiteMatch
 from sovarc.compiler.maps.geometry import angle_diff
 from sovarc.compiler.plan import PEDESTRIAN

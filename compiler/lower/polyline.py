@@ -126,7 +126,7 @@ def blend(first: Polyline, second: Polyline, start: float, end: float) -> Polyli
 def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16) -> Polyline:
     """A cubic curve leaving p0 in compass heading h0 and arriving at p1 in heading h1."""
     reach = math.dist(p0, p1) / 3.0
-    d0, d1 = _unit(h0), _unit(h1)
+    d0, d1 = unit(h0), unit(h1)
     c0 = (p0[0] + reach * d0[0], p0[1] + reach * d0[1])
     c1 = (p1[0] - reach * d1[0], p1[1] - reach * d1[1])
     u = np.linspace(0.0, 1.0, samples)[:, None]
@@ -139,7 +139,8 @@ def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16) -> Pol
     return Polyline(pts)
 
 
-def _unit(heading: float) -> Point:
+def unit(heading: float) -> Point:
+    """The unit vector of a compass heading."""
     rad = math.radians(heading)
     return (math.sin(rad), math.cos(rad))
 

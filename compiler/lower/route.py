@@ -8,7 +8,6 @@ the site does not fix (anywhere along a lane) has a range, and the solver picks 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -97,8 +96,3 @@ def order_stops(actions: tuple[Action, ...], stretches: dict[int, tuple[float, f
             lo, hi = stop_range(before, after)
             events.append(Event(k, ActionKind.STOP, lo, hi))
     return events
-
-
-def unit(heading: float) -> tuple[float, float]:
-    rad = math.radians(heading)
-    return (math.sin(rad), math.cos(rad))

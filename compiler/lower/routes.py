@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
-from sovarc.compiler.lower.polyline import Polyline, bezier, concat
+from sovarc.compiler.lower.polyline import Polyline, bezier, concat, unit
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
@@ -160,8 +160,6 @@ def _junction_line(
 
 
 def _u_bend(p0: tuple[float, float], heading: float, p1: tuple[float, float]) -> list[tuple[float, float]]:
-    from sovarc.compiler.lower.route import unit
-
     width = max(((p0[0] - p1[0]) ** 2 + (p0[1] - p1[1]) ** 2) ** 0.5, 3.0)
     d = unit(heading)
     reach = width * 0.9
