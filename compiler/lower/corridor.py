@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-import numpy as np
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import change_length
 from sovarc.compiler.maps import Arm, LaneInfo
@@ -138,33 +137,32 @@ class Drive:
         target = self._target(number, self.against)
         s1, _ = target.project(p0)
         p1 = target.point(s1)
-        width = math.dist(p0, p1)
-        reach = max(width * 0.9, 3.0)
-        d = unit(heading)
-        u = np.linspace(0.0, 1.0, 24)[:, None]
-        c0 = np.asarray(p0) + reach * np.asarray(d)
-        c1 = np.asarray(p1) + reach * np.asarray(d)
-        arc = (
-            (1 - u) ** 3 * np.asarray(p0) + 3 * (1 - u) ** 2 * u * c0 + 3 * (1 - u) * u**2 * c1 + u**3 * np.asarray(p1)
-        )
+        arc = bezier(p0, heading, p1, heading + 180.0, samples=24, reach=max(math.dist(p0, p1) * 0.9, 3.0))
         head = self.line.sub(0.0, at)
         tail = target.sub(s1, target.length)
-        self.line = concat([head, Polyline(arc), tail])
-        end = head.length + Polyline(arc).length
+        self.line = concat([head, arc, tail])
+        end = head.length + arc.length
         self.stretches[index] = (at, end)
         return end
 
-    def leave(self, index: int, at: float, side: Side) -> float:
-        """Turn off the road into a driveway or side road on `side`."""
-        heading = self.line.heading(at)
+    def _driveway(self, side: Side, against: bool) -> tuple[float, float]:
+        """How far sideways a driveway on `side` lies from the line, and the turn (degrees) towards it.
+
+        A driveway on the left is reached across the other direction's lanes, which become
+        lanes the vehicle may use; driving against traffic, the road's sides swap.
+        """
         right, left = self.corridor.half_width()
         if side is Side.LEFT:
             for lane in self.corridor.other:
                 self._use(lane)
-        lateral = (right if side is Side.RIGHT else left) + OFF_ROAD
-        if self.against:
-            lateral = right + OFF_ROAD if side is Side.LEFT else left + OFF_ROAD
-        turn = 90.0 if side is Side.RIGHT else -90.0
+        near, far = (left, right) if against else (right, left)
+        lateral = (near if side is Side.RIGHT else far) + OFF_ROAD
+        return lateral, 90.0 if side is Side.RIGHT else -90.0
+
+    def leave(self, index: int, at: float, side: Side) -> float:
+        """Turn off the road into a driveway or side road on `side`."""
+        heading = self.line.heading(at)
+        lateral, turn = self._driveway(side, self.against)
         forward = lateral * 0.8
         d, n = unit(heading), unit(heading + turn)
         p0 = self.line.point(at)
@@ -181,12 +179,7 @@ class Drive:
     def enter(self, index: int, at: float, side: Side) -> float:
         """Start in a driveway on `side` and drive onto the road, reaching the current lane at `at`."""
         heading = self.line.heading(at)
-        right, left = self.corridor.half_width()
-        if side is Side.LEFT:
-            for lane in self.corridor.other:
-                self._use(lane)
-        lateral = (right if side is Side.RIGHT else left) + OFF_ROAD
-        turn = 90.0 if side is Side.RIGHT else -90.0  # the driveway lies this way of the heading
+        lateral, turn = self._driveway(side, against=False)  # it joins the road on its own side
         back = lateral * 0.8
         d, n = unit(heading), unit(heading + turn)
         p1 = self.line.point(at)

@@ -123,9 +123,13 @@ def blend(first: Polyline, second: Polyline, start: float, end: float) -> Polyli
     return Polyline(np.vstack([before, np.asarray(middle), after]))
 
 
-def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16) -> Polyline:
-    """A cubic curve leaving p0 in compass heading h0 and arriving at p1 in heading h1."""
-    reach = math.dist(p0, p1) / 3.0
+def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16, reach: float | None = None) -> Polyline:
+    """A cubic curve leaving p0 in compass heading h0 and arriving at p1 in heading h1.
+
+    `reach` is how far the control points lie along the two headings (default: a third of
+    the chord); a U-turn, whose ends are close together, needs it longer to be round.
+    """
+    reach = math.dist(p0, p1) / 3.0 if reach is None else reach
     d0, d1 = unit(h0), unit(h1)
     c0 = (p0[0] + reach * d0[0], p0[1] + reach * d0[1])
     c1 = (p1[0] - reach * d1[0], p1[1] - reach * d1[1])
