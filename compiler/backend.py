@@ -41,14 +41,12 @@ def default_map() -> Path:
 
 def plans_for(scenario: Scenario, road_map: RoadMap, roads: int, seed: int) -> list[SiteResult]:
     """Lower and synthesize on up to `roads` sites; a site's failure is kept as its result."""
-    from sovarc.compiler.lower import lower_on
-    from sovarc.compiler.lower.assume import assume
-    from sovarc.compiler.maps import match_sites
+    from sovarc.compiler.lower import lower_on, sites_for
     from sovarc.compiler.synth import synthesize
 
-    staged, notes = assume(scenario)
+    staged, notes, matches = sites_for(scenario, road_map, roads=roads, seed=seed)
     results = []
-    for match in match_sites(staged, road_map, n=roads, seed=seed, clamp=True):
+    for match in matches:
         result = SiteResult(match.site.id)
         try:
             result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)

@@ -47,9 +47,16 @@ class Lowered:
 
 def lower(scenario: Scenario, road_map: RoadMap, *, roads: int = 1, seed: int = 0) -> list[Lowered]:
     """Stage the scenario on up to `roads` distinct sites of the map."""
-    staged, notes = assume(scenario)
-    matches = match_sites(staged, road_map, n=roads, seed=seed, clamp=True)
+    staged, notes, matches = sites_for(scenario, road_map, roads=roads, seed=seed)
     return [lower_on(staged, match, road_map, notes) for match in matches]
+
+
+def sites_for(
+    scenario: Scenario, road_map: RoadMap, *, roads: int = 1, seed: int = 0
+) -> tuple[Scenario, list[str], list[SiteMatch]]:
+    """The scenario with its unknown facts filled, the notes saying how, and the sites chosen for it."""
+    staged, notes = assume(scenario)
+    return staged, notes, match_sites(staged, road_map, n=roads, seed=seed, clamp=True)
 
 
 def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: list[str]) -> Lowered:
