@@ -13,7 +13,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from sovarc.compiler.cli_backend import (
+    add_lower_parser,
     add_site_options,
+    add_srr_parser,
     cmd_eval_srr,
     cmd_lower,
     print_plans,
@@ -125,22 +127,7 @@ def _build_parser() -> argparse.ArgumentParser:
     run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
     _add_llm(run)
 
-    low = sub.add_parser(
-        "lower",
-        help=COMMANDS["lower"],
-        formatter_class=_formatter,
-        description=(
-            "Stage a scenario on sites of a map: routes, the collision area, Z3 constraints (Groups 1-5),\n"
-            "OMPL paths and Ruckig timing. Writes, per site, plan.txt (readable), plan.json and plan.png.\n\n"
-            "examples:\n"
-            "  sovarc lower examples/scenarios/intersection_left_turn_across_path_side.sov -o out\n"
-            "  sovarc lower scenario.sov -m city.net.xml --roads 3 --seed 7 -o out"
-        ),
-    )
-    low.add_argument("input", help="a scenario (.sov or .json)")
-    add_site_options(low)
-    low.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
-    low.add_argument("-o", "--output", required=True, help="folder for one sub-folder per site")
+    add_lower_parser(sub, COMMANDS["lower"], _formatter)
 
     check = sub.add_parser(
         "check",
@@ -267,22 +254,7 @@ def _build_parser() -> argparse.ArgumentParser:
     exv.add_argument("--truth", required=True, help="folder of <category>/<n>.json ground truth")
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     _add_llm(exv)
-    srr = which.add_parser(
-        "srr",
-        formatter_class=_formatter,
-        help="scenario reconstruction rate in SUMO, per road kind",
-        description="Stage every scenario on --roads sites of each map, replay it in SUMO and print the\n"
-        "reconstruction rate per road kind (the paper's Table 4) and the failures by class\n"
-        "(Table 5: planning failed, crash type mismatch, line crossing).\n\n"
-        "example:\n"
-        "  sovarc import-truth ../shared/data/nmvccs/truth -o truth\n"
-        "  sovarc eval srr truth --roads 3 -m examples/maps/town.net.xml --json srr.json",
-    )
-    srr.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
-    srr.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
-    srr.add_argument("--roads", type=int, default=3, metavar="N", help="sites per scenario (default 3)")
-    srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
-    srr.add_argument("--json", help="also write every scenario-site's result here")
+    add_srr_parser(which, _formatter)
     return parser
 
 
@@ -548,12 +520,6 @@ def _cmd_extract(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
-def _cmd_lower(args: argparse.Namespace) -> int:
-    scenario, _ = load_scenario(args.input)
-    verify_or_raise(scenario)
-    return cmd_lower(args, scenario)
-
-
 def _cmd_eval(args: argparse.Namespace) -> int:
     if args.evaluation == "srr":
         return cmd_eval_srr(args)
@@ -596,7 +562,7 @@ HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
     "eval": _cmd_eval,
     "import-truth": _cmd_import_truth,
     "run": _cmd_run,
-    "lower": _cmd_lower,
+    "lower": cmd_lower,
     "check": _cmd_check,
     "fmt": _cmd_fmt,
     "diff": _cmd_diff,

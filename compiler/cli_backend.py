@@ -7,8 +7,9 @@ import json
 import sys
 from collections import Counter
 from pathlib import Path
+from typing import Any
 
-from sovarc.compiler.backend import TARGETS, compile_sites, plans_for, summary
+from sovarc.compiler.backend import TARGETS, compile_sites, default_map, passed, plans_for, summary
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.progress import progress
@@ -40,13 +41,12 @@ def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
     print(summary(results, args.target), end="")
     print(f"written to {out}/", file=sys.stderr)
     # A failed ego test (fmu) is a finding about the driving system, not a failure of the run.
-    ok = all(r.plan is not None and all(_passed(v) for t, v in r.verdicts.items() if t != "fmu") for r in results)
+    ok = all(r.plan is not None and all(passed(v) for t, v in r.verdicts.items() if t != "fmu") for r in results)
     return EXIT_OK if ok else EXIT_INPUT
 
 
 def print_plans(scenario: Scenario, args: argparse.Namespace) -> int:
     """`--dump-ir-after=lower`: the plan of each site in its text form."""
-    from sovarc.compiler.backend import default_map
     from sovarc.compiler.plan_text import render_plan
 
     results = plans_for(scenario, load_map(args.map or default_map()), args.roads, args.seed)
@@ -59,19 +59,56 @@ def print_plans(scenario: Scenario, args: argparse.Namespace) -> int:
     return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
 
 
-def cmd_lower(args: argparse.Namespace, scenario: Scenario) -> int:
+def add_lower_parser(sub: Any, summary: str, formatter: Any) -> None:
+    low = sub.add_parser(
+        "lower",
+        help=summary,
+        formatter_class=formatter,
+        description=(
+            "Stage a scenario on sites of a map: routes, the collision area, Z3 constraints (Groups 1-5),\n"
+            "OMPL paths and Ruckig timing. Writes, per site, plan.txt (readable), plan.json and plan.png.\n\n"
+            "examples:\n"
+            "  sovarc lower examples/scenarios/intersection_left_turn_across_path_side.sov -o out\n"
+            "  sovarc lower scenario.sov -m city.net.xml --roads 3 --seed 7 -o out"
+        ),
+    )
+    low.add_argument("input", help="a scenario (.sov or .json)")
+    add_site_options(low)
+    low.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    low.add_argument("-o", "--output", required=True, help="folder for one sub-folder per site")
+
+
+def add_srr_parser(which: Any, formatter: Any) -> None:
+    srr = which.add_parser(
+        "srr",
+        formatter_class=formatter,
+        help="scenario reconstruction rate in SUMO, per road kind",
+        description="Stage every scenario on --roads sites of each map, replay it in SUMO and print the\n"
+        "reconstruction rate per road kind (the paper's Table 4) and the failures by class\n"
+        "(Table 5: planning failed, crash type mismatch, line crossing).\n\n"
+        "example:\n"
+        "  sovarc import-truth ../shared/data/nmvccs/truth -o truth\n"
+        "  sovarc eval srr truth --roads 3 -m examples/maps/town.net.xml --json srr.json",
+    )
+    srr.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
+    srr.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
+    srr.add_argument("--roads", type=int, default=3, metavar="N", help="sites per scenario (default 3)")
+    srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    srr.add_argument("--json", help="also write every scenario-site's result here")
+
+
+def cmd_lower(args: argparse.Namespace) -> int:
+    from sovarc.compiler.scenario_io import load_scenario
+    from sovarc.dsl import verify_or_raise
+
+    scenario, _ = load_scenario(args.input)
+    verify_or_raise(scenario)
     results = compile_sites(scenario, args.map, roads=args.roads, seed=args.seed, out_dir=args.output)
     for r in results:
         if r.error is not None:
             print(r.error.render(), file=sys.stderr)
     print(summary(results, ()), end="")
     return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
-
-
-def _passed(verdict: object) -> bool:
-    from sovarc.compiler.backend import passed
-
-    return passed(verdict)
 
 
 def classify(verdict: object) -> str | None:
@@ -92,7 +129,7 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
     from sovarc.targets import sumo
 
     files = sorted(p for name in args.scenarios for p in _sov_files(Path(name)))
-    maps = args.map or [str(_default())]
+    maps = args.map or [str(default_map())]
     report: dict[str, dict[str, object]] = {}
     for map_path in maps:
         road_map = load_map(map_path)
@@ -145,9 +182,3 @@ def _srr_table(name: str, rows: list[dict[str, object]]) -> str:
 
 def _sov_files(path: Path) -> list[Path]:
     return sorted(path.glob("*.sov")) if path.is_dir() else [path]
-
-
-def _default() -> Path:
-    from sovarc.compiler.backend import default_map
-
-    return default_map()
