@@ -65,6 +65,7 @@ def compile_sites(
     targets: tuple[str, ...] = (),
     out_dir: str | Path | None = None,
     ego: str | None = None,
+    osc_version: str | None = None,
 ) -> list[SiteResult]:
     road_map = load_map(map_path or default_map())
     results = plans_for(scenario, road_map, roads, seed)
@@ -78,7 +79,9 @@ def compile_sites(
             continue
         write_plan_files(result.plan, road_map, folder)
         for target in targets:
-            result.verdicts[target] = run_target(target, result.plan, folder, seed=seed, ego=ego)
+            result.verdicts[target] = run_target(
+                target, result.plan, folder, seed=seed, ego=ego, osc_version=osc_version
+            )
     return results
 
 
@@ -91,7 +94,10 @@ def write_plan_files(plan: Plan, road_map: RoadMap, folder: Path) -> None:
     write_atomic(folder / "plan.png", draw_plan(plan, road_map))
 
 
-def run_target(target: str, plan: Plan, folder: Path, *, seed: int = 0, ego: str | None = None) -> Any:
+def run_target(
+    target: str, plan: Plan, folder: Path, *, seed: int = 0, ego: str | None = None, osc_version: str | None = None
+) -> Any:
+    """Emit and check one target; `osc_version` is the OpenSCENARIO version (None: the target's default)."""
     if target == "sumo":
         from sovarc.targets import sumo
 
@@ -102,7 +108,7 @@ def run_target(target: str, plan: Plan, folder: Path, *, seed: int = 0, ego: str
     if target == "openscenario":
         from sovarc.targets import openscenario
 
-        xosc = openscenario.emit(plan, folder / "openscenario")
+        xosc = openscenario.emit(plan, folder / "openscenario", osc_version or openscenario.DEFAULT_VERSION)
         verdict = openscenario.check(xosc, plan)
         write_atomic(folder / "verdict-openscenario.json", verdict.dumps())
         return verdict

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from sovarc.compiler.cli_backend import (
+    OSC_VERSIONS,
     add_lower_parser,
     add_site_options,
     add_srr_parser,
@@ -101,6 +102,7 @@ def _build_parser() -> argparse.ArgumentParser:
             "  sovarc scenario.sov --dump-ir-after=read\n"
             "  sovarc scenario.sov -o checked.sov\n"
             "  sovarc examples/reports/left_turn_oncoming_pickup.txt -t sumo --roads 3 -o out\n"
+            "  sovarc examples/reports/left_turn_oncoming_pickup.txt -t openscenario --osc-version 1.0 -o out\n"
             "  sovarc scenario.sov --dump-ir-after=lower -m city.net.xml"
         ),
     )
@@ -115,6 +117,12 @@ def _build_parser() -> argparse.ArgumentParser:
     run.add_argument("-o", "--output", help="the final IR (no -t), or the output folder (with -t)")
     add_site_options(run)
     run.add_argument("--ego", help="with -t fmu: the driving system under test, an FMI 2.0 FMU")
+    run.add_argument(
+        "--osc-version",
+        choices=OSC_VERSIONS,
+        default=OSC_VERSIONS[-1],
+        help=f"with -t openscenario: the OpenSCENARIO XML version written (default {OSC_VERSIONS[-1]})",
+    )
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
     run.add_argument(
         "--dump-ir-after",

@@ -16,6 +16,9 @@ from sovarc.compiler.progress import progress
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
 from sovarc.dsl.ir import Scenario
 
+# The OpenSCENARIO versions the target writes (targets.openscenario.VERSIONS, which is not
+# imported here: the CLI loads a target only when it runs it); the newest is the default.
+OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
 FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
 
 
@@ -36,7 +39,14 @@ def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
     """The main job's back end: plans on --roads sites, each target emitted and checked."""
     out = Path(args.output) if args.output else Path("sovarc-out") / scenario.name
     results = compile_sites(
-        scenario, args.map, roads=args.roads, seed=args.seed, targets=args.target, out_dir=out, ego=args.ego
+        scenario,
+        args.map,
+        roads=args.roads,
+        seed=args.seed,
+        targets=args.target,
+        out_dir=out,
+        ego=args.ego,
+        osc_version=args.osc_version,
     )
     print(summary(results, args.target), end="")
     print(f"written to {out}/", file=sys.stderr)
