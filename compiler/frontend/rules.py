@@ -11,14 +11,23 @@ from __future__ import annotations
 
 import hashlib
 import re
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 
-from sovarc.compiler.frontend.text import normalize_names, participants, sentences, up_to_first_impact
+from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
+from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
+from sovarc.compiler.frontend.crash import read_crash
+from sovarc.compiler.frontend.text import (
+    first_impact,
+    name_parked,
+    normalize_names,
+    participants,
+    resolve_aliases,
+    sentences,
+)
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
     ActionKind,
-    Crash,
     CrashType,
     Environment,
     Heading,
@@ -29,7 +38,6 @@ from sovarc.dsl.ir import (
     RoadKind,
     Role,
     Scenario,
-    Side,
     Speed,
     SpeedUnit,
     Unknown,
@@ -56,56 +64,6 @@ _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunn
 
 _SPEED = re.compile(r"(\d{2,3})\s*-?\s*(km/?h|kmph|kph|mph)\b", re.IGNORECASE)
 _HEADING = re.compile(r"\b(north|east|south|west)(?:bound|ward|erly)?\b", re.IGNORECASE)
-
-_ACTION_PATTERNS: list[tuple[ActionKind, str]] = [
-    (ActionKind.U_TURN, r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b"),
-    (ActionKind.TURN_LEFT, r"\bturn(?:ed|ing|s)? (?:to the )?left\b|\bleft[- ]turn(?:ing)?\b"),
-    (ActionKind.TURN_RIGHT, r"\bturn(?:ed|ing|s)? (?:to the )?right\b|\bright[- ]turn(?:ing)?\b"),
-    (ActionKind.CHANGE_LANE, r"\bchang(?:e|ed|ing) lanes?\b|\blane change\b|\bmerg(?:e|ed|ing)\b"),
-    (
-        ActionKind.RETROGRADE,
-        r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
-        r"|\binto the (?:opposing|oncoming) (?:lane|traffic)|\bwrong (?:way|side)\b"
-        r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
-        r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
-        r"|\bcrossed over\b(?! the (?:curb|median))",
-    ),
-    (
-        ActionKind.DRIVE_INTO,
-        r"\bpull(?:ed|ing)? (?:out )?(?:of|from) (?:a|the|an) (?:private )?(?:driveway|parking|lot)"
-        r"|\bexit(?:ed|ing)? (?:a|the|an) (?:private )?(?:driveway|parking)|\bfrom (?:a|the) (?:private )?driveway"
-        r"|\bre-?entered the road",
-    ),
-    (ActionKind.DRIVE_OFF, r"\bran off the road|\bdeparted the road|\bleft the road|\bonto the shoulder"),
-    (
-        ActionKind.GO_ACROSS,
-        r"\bgo(?:ing)? straight\b|\bstraight through\b|\bcross(?:ed|ing)? the intersection|\bthrough the intersection"
-        r"|\bproceed(?:ed|ing)? (?:straight|through)",
-    ),
-    (
-        ActionKind.STOP,
-        r"\b(?:was|were|had) stopped\b|\bstopped (?:for|at|in)\b|\bcame to a (?:stop|complete stop)\b"
-        r"|\bslowed to a stop\b|\bwaiting\b|\bstationary\b",
-    ),
-]
-# Words that say a participant was moving, and a crossing after a stop; used for ordering, not as actions alone.
-_TRAVELLING = re.compile(
-    r"\b(?:travel(?:l)?(?:ed|ing)|approach(?:ed|ing)|driving|proceed(?:ed|ing)|head(?:ed|ing))\b", re.I
-)
-_CROSSING_AFTER_STOP = re.compile(
-    r"\b(?:proceed(?:ed|ing)|pull(?:ed|ing)|drove|continu(?:ed|ing)|enter(?:ed|ing)|accelerat(?:ed|ing))\b"
-    r"(?: \w+){0,3} (?:into|through|across) the intersection|\battempt(?:ed|ing) to cross\b",
-    re.IGNORECASE,
-)
-_PRECRASH_LEFT = re.compile(
-    r"critical pre-?crash event\b[^.]*?\b(V\d)\b[^.]*?\b(?:over the lane line on (?:the )?left side|"
-    r"lane line on left side|cross(?:ed|ing)? (?:the )?cent(?:er|re) ?line|left of cent(?:er|re))",
-    re.IGNORECASE,
-)
-_INTENDED = re.compile(
-    r"\b(?:intend(?:ed|ing|s)? (?:to|on)|planning to|planned to|wanted to|was going to|in order to)\b[^.,;]*",
-    re.IGNORECASE,
-)
 
 
 def _number(word: str) -> int:
@@ -168,174 +126,88 @@ def extract_lanes(text: str) -> int | Unknown:
 
 def extract_road_kind(text: str) -> RoadKind:
     low = text.lower()
-    if re.search(r"\bt[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg|\by[- ]intersection", low):
+    if re.search(r"\b['\"]?[ty]['\"]?[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg", low):
         return RoadKind.T_JUNCTION
     if re.search(r"\bintersection\b|\bintersecting\b", low):
         return RoadKind.INTERSECTION
     return RoadKind.STRAIGHT
 
 
-@dataclass
-class _Reading:
-    heading: Heading | Unknown = UNKNOWN
-    lane: int | Unknown = UNKNOWN
-    speed: Speed | Unknown = UNKNOWN
-    actions: list[tuple[int, Action]] | None = None
-    travelling_at: float = float("inf")  # where the text first says it was moving
-    crossings: list[int] = field(default_factory=list)  # where it says it crossed the intersection
+# A heading said with a verb of motion ("traveling west", "was eastbound") is the vehicle's own; a lane's
+# direction ("in the westbound lane") is where it was; "to travel westbound", "a westbound left turn",
+# "onto a northbound road", "two westbound and two eastbound lanes" and "facing east at rest" are not its heading.
+_COMPASS = r"(north|south|east|west)(?:bound|ward|erly)?(?![a-z/-])"
+_MOVING_HEADING = re.compile(
+    r"\b(?:travel\w*|driv(?:ing|es|e)|drove|head(?:ed|ing)|going|proceed\w*|moving|was|were|continu\w*|approach\w*"
+    r"|negotiat\w*|stopped facing|(?:was|were) (?:\w+ )?facing)(?: due| in an?| generally)? " + _COMPASS,
+    re.I,
+)
+_FACING = re.compile(r"(?<!rest )(?<!rest, )\bfacing (?:due |generally )?" + _COMPASS, re.I)
+_LANE_HEADING = re.compile(r"\b(?:in|on|within) (?:the|its|his|her) (?:\w+ )?(north|south|east|west)bound\b", re.I)
+_NOT_HEADING = re.compile(
+    r"\b(?:to (?:travel|go|head|proceed|turn)|onto|into|toward|towards)\b[^.,;]*?$"
+    r"|\b(?:\d|one|two|three|four|both)(?: \w+)? $",
+    re.I,
+)
+_BOUND = re.compile(r"\b(north|south|east|west)bound\b(?! (?:and|or|/)\b)(?!(?: \w+)? (?:left|right|u)[- ]?turn)", re.I)
 
 
-def _segments(sents: list[str], ids: list[str]) -> dict[str, list[str]]:
-    """Text after each mention of a participant, up to the next mention: what it did."""
-    out: dict[str, list[str]] = {pid: [] for pid in ids}
-    for s in sents:
-        marks = [(m.start(), m.group()) for m in re.finditer(r"\b[VP]\d\b", s) if m.group() in out]
-        if not marks:
-            continue
-        ends = [start for start, _ in marks[1:]] + [len(s)]
-        for (start, pid), end in zip(marks, ends, strict=True):
-            out[pid].append(s[start:end])
-    return out
-
-
-def _read_participant(chunks: list[str], lanes: int | Unknown) -> _Reading:
-    reading = _Reading(actions=[])
-    offset = 0
-    for chunk in chunks:
-        done = _INTENDED.sub(" ", chunk)
-        if isinstance(reading.heading, Unknown) and (h := _HEADING.search(done)):
-            reading.heading = Heading(h.group(1).lower())
-        if isinstance(reading.lane, Unknown):
-            reading.lane = _lane(done, lanes)
-        if isinstance(reading.speed, Unknown) and not re.search(r"\blimit|\bposted", done, re.IGNORECASE):
-            reading.speed = first_speed(done)
-        for kind, pattern in _ACTION_PATTERNS:
-            for m in re.finditer(pattern, done, re.IGNORECASE):
-                to: int | Side | None = None
-                if kind is ActionKind.CHANGE_LANE:
-                    side = re.search(r"\b(left|right)\b", done[m.start() : m.start() + 60], re.IGNORECASE)
-                    if side is None:
-                        continue
-                    to = Side(side.group(1).lower())
-                reading.actions.append((offset + m.start(), Action(kind, to)))
-        if (m := _TRAVELLING.search(done)) is not None:
-            reading.travelling_at = min(reading.travelling_at, offset + m.start())
-        for m in _CROSSING_AFTER_STOP.finditer(done):
-            reading.crossings.append(offset + m.start())
-        offset += len(chunk) + 1
-    return reading
-
-
-def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
-    if m := re.search(r"\blane " + _NUMBER + r"\b", text, re.IGNORECASE):
-        return _number(m.group(1))
-    if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
-        return _ORDINAL[m.group(1).lower()]
-    if re.search(r"\b(?:right|curb|outside|only) (?:\w+ )?lane\b", text, re.IGNORECASE):
-        return 1
-    if re.search(r"\b(?:left|inside|passing) (?:\w+ )?lane\b", text, re.IGNORECASE) and isinstance(lanes, int):
-        return max(1, lanes // 2)
+def _heading(pieces: list[Piece]) -> Heading | Unknown:
+    """The heading the pieces state, the surest way of saying it first (see above)."""
+    for pattern in (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING):
+        for piece in pieces:
+            text = what_was_done(piece.text)
+            for m in pattern.finditer(text):
+                if pattern is _BOUND and _NOT_HEADING.search(text[: m.start()]):
+                    continue
+                return Heading(m.group(1).lower())
     return UNKNOWN
 
 
-def _ordered_actions(reading: _Reading) -> tuple[Action, ...]:
-    found = list(reading.actions or [])
-    stops = [at for at, a in found if a.kind is ActionKind.STOP]
-    if stops and not any(a.kind in _MANOEUVRES for at, a in found if at > stops[0]):
-        # stopped at a sign or signal, then drove on across the intersection
-        found += [(at, Action(ActionKind.GO_ACROSS)) for at in reading.crossings if at > stops[0]][:1]
-    ordered: list[Action] = []
-    for _, action in sorted(found, key=lambda item: item[0]):
-        if not ordered or ordered[-1] != action:
-            ordered.append(action)
-    # A vehicle drives in its lane before whatever it does, unless it stood still or came from off the road
-    # (the ground truth's convention); one the report first shows moving, then stopping, drove first.
-    first_at = min((at for at, _ in found), default=float("inf"))
-    standing = ordered and ordered[0].kind in (ActionKind.STOP, ActionKind.DRIVE_INTO)
-    if not standing or (ordered[0].kind is ActionKind.STOP and reading.travelling_at < first_at):
-        ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
-    return tuple(ordered)
+def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
+    if m := re.search(r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b|\bnumber " + _NUMBER + r" lane", text, re.I):
+        return _number(m.group(1) or m.group(2))
+    if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
+        return _ORDINAL[m.group(1).lower()]
+    if re.search(r"\b(?:right|curb|outside|only) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.IGNORECASE):
+        return 1
+    if re.search(r"\b(?:left|inside|passing) (?:\w+ )?lane\b", text, re.IGNORECASE) and isinstance(lanes, int):
+        return max(1, lanes // 2)
+    if lanes == 2 and re.search(r"\b(?:in|within) the (?:north|south|east|west)bound (?:travel )?lane\b", text, re.I):
+        return 1  # a road with one lane each way
+    return UNKNOWN
 
 
-_MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.GO_ACROSS, ActionKind.U_TURN)
+def _lane_of(pieces: list[Piece], lanes: int | Unknown) -> int | Unknown:
+    for piece in pieces:
+        text = re.sub(r"\b(?:turn|turned|turning) (?:\w+ ){0,3}into (?:the )?[^.,;]*", " ", piece.text)
+        if not isinstance(lane := _lane(text, lanes), Unknown):
+            return lane
+    return UNKNOWN
 
 
-# The part of the struck participant; "the right front side" is a side.
-_STRUCK_PART = r"(?:(?:left|right) )?(?:front|rear) (?:(?:left|right) )?side|front|rear|back|side|end"
-_STRIKE = re.compile(
-    r"front(?: \w+)? of (?P<a>[VP]\d)\b[^.]*?\b(?:struck|impacted|contacted|hit|strik\w+|collided with)\b[^.]*?"
-    r"(?P<part>" + _STRUCK_PART + r")\b[^.]*?\b(?P<b>[VP]\d)\b"
-    r"|(?P<a2>[VP]\d)\b[^.]*?\b(?:struck|impacted|contacted|hit|rear-ended|collided with)\b(?! by)[^.]*?"
-    r"(?P<part2>" + _STRUCK_PART + r")\b[^.]*?\b(?P<b2>[VP]\d)\b"
-    r"|(?P<b3>[VP]\d)\b[^.]*?(?P<part3>front|rear|back|side|end)\b[^.]*?\bwas (?:struck|impacted|contacted|hit) by"
-    r" (?:the front of )?(?P<a3>[VP]\d)\b",
+def _speed(pieces: list[Piece]) -> Speed | Unknown:
+    for piece in pieces:
+        speed = first_speed(piece.text)
+        if not re.search(r"\blimit|\bposted", piece.text, re.IGNORECASE) and not isinstance(speed, Unknown):
+            return speed
+    return UNKNOWN
+
+
+_SAME_WAY = re.compile(
+    r"\b(V\d)\b[^.]*?\b(?:in the same direction|same direction)\b[^.]*?\b(?:behind|ahead of|as|of) (V\d)\b"
+    r"|\b(V\d)\b[^.]*?\b(?:behind|following|ahead of|in back of) (V\d)\b",
     re.IGNORECASE,
 )
-_PART = {
-    "front": CrashType.FRONTAL,
-    "rear": CrashType.REAR_END,
-    "back": CrashType.REAR_END,
-    "end": CrashType.REAR_END,
-    "side": CrashType.SIDE,
-}
-
-
-def extract_crash(sents: list[str]) -> Crash:
-    for s in sents:
-        m = _STRIKE.search(s)
-        if not m:
-            continue
-        a = m.group("a") or m.group("a2") or m.group("a3")
-        b = m.group("b") or m.group("b2") or m.group("b3")
-        part = (m.group("part") or m.group("part2") or m.group("part3")).lower()
-        part = "side" if part.endswith("side") else part
-        if a != b:
-            return Crash(_PART[part], a, b)
-    if any(re.search(r"head[- ]on", s, re.IGNORECASE) for s in sents):
-        return Crash(CrashType.FRONTAL)
-    return Crash()
-
-
 _BOTH = re.compile(
     r"\b(V\d)\b[^.]*?\band (?:the )?(V\d)\b[^.]*?\bwere (?:both )?(?:\w+ )?(?:traveling|travelling|driving|heading|"
     r"proceeding|going) (?:in an? )?(north|south|east|west)",
     re.IGNORECASE,
 )
-_SAME_WAY = re.compile(
-    r"\b(V\d)\b[^.]*?\b(?:in the same direction|same direction)\b[^.]*?\b(?:behind|ahead of|as|of) (V\d)\b"
-    r"|\b(V\d)\b[^.]*?\b(?:behind|following) (V\d)\b[^.]*?\bsame (?:direction|lane)",
-    re.IGNORECASE,
-)
-
-
-def _precrash_retrograde(sents: list[str], people: list[Participant]) -> list[Participant]:
-    """The database's coded pre-crash event ("travelling over the lane line on the left side"), often written
-    after the impact, says a vehicle went into the opposing lane."""
-    wrong_way = {m.group(1) for s in sents if (m := _PRECRASH_LEFT.search(s))}
-    out = []
-    for p in people:
-        kinds = [a.kind for a in p.known_actions]
-        if p.id in wrong_way and ActionKind.RETROGRADE not in kinds and kinds[:1] == [ActionKind.FOLLOW_LANE]:
-            p = replace(p, actions=(*p.known_actions, Action(ActionKind.RETROGRADE)))
-        out.append(p)
-    return out
-
-
-_SCENE = re.compile(r"\boccurred (?:in|on|within) the (north|south|east|west)bound (?:travel )?lanes?\b", re.IGNORECASE)
-
-
-def _scene_heading(text: str, people: list[Participant]) -> list[Participant]:
-    """ "The crash occurred in the southbound lanes": when no vehicle's own heading is stated, they all drove so."""
-    vehicles = [p for p in people if p.role is Role.VEHICLE]
-    m = _SCENE.search(text)
-    if m is None or not vehicles or not all(isinstance(p.heading, Unknown) for p in vehicles):
-        return people
-    return [replace(p, heading=Heading(m.group(1).lower())) if p.role is Role.VEHICLE else p for p in people]
 
 
 def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
-    """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... in the same direction
-    behind V2"."""
+    """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... behind V2"."""
     heading = {p.id: p.heading for p in people}
     for sentence in sents:
         if m := _BOTH.search(sentence):
@@ -352,29 +224,81 @@ def _shared_headings(sents: list[str], people: list[Participant]) -> list[Partic
     return [replace(p, heading=heading[p.id]) for p in people]
 
 
+_SCENE = re.compile(
+    r"\boccurred (?:in|on|within) the (?:(right|left|curb) lane of the )?(north|south|east|west)bound"
+    r" (?:travel )?lanes?\b",
+    re.IGNORECASE,
+)
+
+
+def _scene(text: str, people: list[Participant], parked: set[str]) -> list[Participant]:
+    """ "The crash occurred in the right lane of the southbound lanes": when no vehicle's own heading is stated,
+    the moving ones all drove so (and in that lane)."""
+    moving = [p for p in people if p.role is Role.VEHICLE and p.id not in parked]
+    m = _SCENE.search(text)
+    if m is None or not moving or not all(isinstance(p.heading, Unknown) for p in moving):
+        return people
+    lane = 1 if m.group(1) and m.group(1).lower() in ("right", "curb") else UNKNOWN
+    return [
+        replace(p, heading=Heading(m.group(2).lower()), lane=lane if isinstance(p.lane, Unknown) else p.lane)
+        if p in moving
+        else p
+        for p in people
+    ]
+
+
+_PARKED = re.compile(r"\bparked\b", re.IGNORECASE)
+_WALKING = re.compile(
+    r"\bwalk(?:ing|ed|s)? (?:along|beside|with traffic|against traffic)\b|\balong the (?:edge|shoulder|side)\b", re.I
+)
+
+
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
-    named = normalize_names(text)
+    named = name_parked(resolve_aliases(normalize_names(text)))
     sents = sentences(named)
     ids = participants(named)
-    before = up_to_first_impact(sents)
+    impact = first_impact(sents)
+    parts = pieces(sents, ids)
+    mine = by_participant(parts, ids)
     lanes = extract_lanes(named)
-    chunks = _segments(before, ids)
+    kind = extract_road_kind(named)
+    before = [s for s in sents[: impact + 1]] if impact >= 0 else sents
+    carry = next((p.who[0] for p in parts if p.sentence == impact and p.who), None)
+    crash = read_crash(sents, impact, carry)
+    wrong_way = precrash_wrong_way(sents)
     people = []
+    parked: set[str] = set()
     for pid in ids:
-        r = _read_participant(chunks[pid], lanes)
-        role = Role.PEDESTRIAN if pid.startswith("P") else Role.VEHICLE
-        actions = (Action(ActionKind.CROSS),) if role is Role.PEDESTRIAN else _ordered_actions(r)
-        people.append(Participant(pid, role, r.heading, r.lane, r.speed, actions))
+        early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
+        late = [p for p in mine[pid] if p not in early]
+        heading = _heading(early)
+        heading = _heading(late) if isinstance(heading, Unknown) else heading
+        lane = _lane_of(early, lanes)
+        lane = _lane_of(late, lanes) if isinstance(lane, Unknown) else lane
+        if any(_PARKED.search(p.text) for p in early):
+            parked.add(pid)
+        if pid.startswith("P"):
+            walking = any(_WALKING.search(p.text) for p in early)
+            action = Action(ActionKind.WALK if walking else ActionKind.CROSS)
+            people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, _speed(early), (action,)))
+            if not walking and crash.victim == pid and isinstance(crash.type, Unknown):
+                crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
+            continue
+        actions = read_actions(early, kind, heading, crash.striker == pid)
+        if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
+            actions = (*actions, Action(ActionKind.RETROGRADE))
+        if isinstance(actions, Unknown) and isinstance(heading, Unknown):
+            lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
+        people.append(Participant(pid, Role.VEHICLE, heading, lane, _speed(early), actions))
     people = _shared_headings(before, people)
-    people = _scene_heading(named, people)
-    people = _precrash_retrograde(sents, people)
+    people = _scene(named, people, parked)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
         name,
         provenance,
         extract_environment(named),
-        Road(extract_road_kind(named), lanes, extract_speed_limit(named)),
+        Road(kind, lanes, extract_speed_limit(named)),
         tuple(people),
-        extract_crash(before if len(before) < len(sents) else sents),
+        crash,
     )

@@ -12,7 +12,16 @@ _VEHICLE = re.compile(
     r"\b(?:V-?(\d)|vehicle\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)(?![\w-]))", re.IGNORECASE
 )
 _PEDESTRIAN = re.compile(r"\b(pedestrian|pedalcyclist|bicyclist|cyclist)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
-_IMPACT = re.compile(r"\b(struck|strik\w+|impact\w*|contact\w*|collid\w+|hit|crash\w+ into|collision)\b", re.IGNORECASE)
+_IMPACT = re.compile(
+    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended)\b",
+    re.IGNORECASE,
+)
+# An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle".
+_NO_IMPACT = re.compile(
+    r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
+    r"(?:collision|impact|contact|crash|striking|hitting)\b",
+    re.IGNORECASE,
+)
 
 
 def normalize_names(text: str) -> str:
@@ -27,6 +36,65 @@ def normalize_names(text: str) -> str:
 
     text = _VEHICLE.sub(vehicle, text)
     return _PEDESTRIAN.sub(pedestrian, text)
+
+
+# "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words
+_DESCRIBED = re.compile(
+    r"\b([VP]\d),? (?:was |is )?(?:an? |the )(?:[\w-]+ )?(?:19|20)\d\d ((?:[A-Z0-9][\w-]*)(?: [A-Z0-9][\w-]*){0,3})"
+    r"((?: [a-z][\w-]*){0,2})"
+)
+_BODY = re.compile(
+    r"\b(pickup|truck|van|minivan|bus|motorcycle|sedan|coupe|wagon|hatchback|suv|tractor-trailer|semi|jeep)\b",
+    re.IGNORECASE,
+)
+
+
+def _aliases(text: str) -> dict[str, str]:
+    """Words a report uses for one participant after naming it once ("the Mercedes", "the pickup").
+
+    Only words that name exactly one participant are kept: two Fords make "the Ford" ambiguous."""
+    seen: dict[str, set[str]] = {}
+    for m in _DESCRIBED.finditer(text):
+        words = m.group(2).split()
+        names = {" ".join(words), *words[:2]}  # the make, its model and both together
+        names |= {b.lower() for b in _BODY.findall(m.group(2) + m.group(3))}
+        for name in names:
+            if (
+                name.islower()
+                and len(re.findall(r"\b(?:an?|another) (?:[\w-]+ ){0,4}?" + name + r"\b", text, re.I)) > 1
+            ):
+                continue  # "a non-contact school bus" too: "the bus" is not only this participant
+            if len(name) > 2 and not name.isdigit():
+                seen.setdefault(name, set()).add(m.group(1))
+    return {name: next(iter(ids)) for name, ids in seen.items() if len(ids) == 1}
+
+
+def resolve_aliases(text: str) -> str:
+    """Rewrite "the Mercedes" and "the pickup" as the participant the report introduced with those words."""
+    aliases = _aliases(text)
+    for name in sorted(aliases, key=len, reverse=True):  # "the Mercedes Benz" before "the Mercedes"
+        flags = re.IGNORECASE if name.islower() else 0
+        text = re.sub(r"\b[Tt]he " + re.escape(name) + r"\b(?![\w-])", aliases[name], text, flags=flags)
+    return text
+
+
+_PARKED = re.compile(
+    r"\b(?:a|an|the) (?:legally |illegally )?parked(?:,? (?:and )?unoccupied)? (?:[\w-]+ ){0,3}?"
+    r"(?:vehicle|car|van|truck|pickup|suv|sedan|bus|trailer)\b",
+    re.IGNORECASE,
+)
+
+
+def name_parked(text: str) -> str:
+    """A parked vehicle the first impact hits without numbering it ("struck a legally parked Ford van") is a
+    participant: it gets the next free number, so the crash has its victim."""
+    sents = sentences(text)
+    impact = first_impact(sents)
+    m = _PARKED.search(sents[impact]) if impact >= 0 else None
+    if m is None or re.search(r"\bV\d,? $", sents[impact][: m.start()]):
+        return text
+    taken = [int(n) for n in re.findall(r"\bV(\d)\b", text)]
+    return text.replace(m.group(), f"V{max(taken, default=0) + 1}, {m.group()},", 1)
 
 
 def sentences(text: str) -> list[str]:
@@ -44,12 +112,21 @@ def participants(text: str) -> list[str]:
     return [f"V{n}" for n in vehicles] + [f"P{n}" for n in pedestrians]
 
 
+def describes_impact(sentence: str) -> bool:
+    """A sentence that says participants met (not one that only says a crash was avoided)."""
+    cleaned = _NO_IMPACT.sub(" ", sentence)
+    return bool(_IMPACT.search(cleaned) and re.search(r"\b[VP]\d\b", sentence))
+
+
+def first_impact(sents: list[str]) -> int:
+    """The index of the first sentence that describes an impact, or -1."""
+    return next((i for i, s in enumerate(sents) if describes_impact(s)), -1)
+
+
 def up_to_first_impact(sents: list[str]) -> list[str]:
     """The sentences up to and including the first one that describes an impact."""
-    for i, s in enumerate(sents):
-        if _IMPACT.search(s) and re.search(r"\b[VP]\d\b", s):
-            return sents[: i + 1]
-    return sents
+    i = first_impact(sents)
+    return sents[: i + 1] if i >= 0 else sents
 
 
 _ENGLISH = frozenset(
@@ -75,7 +152,7 @@ def unrepresented(text: str) -> list[str]:
     if re.search(r"\b(?:pedalcyclist|bicyclist|cyclist|bicycle)s?\b", text, re.IGNORECASE):
         found.append("a cyclist is represented as a pedestrian (the IR has no cyclist role)")
     named = normalize_names(text)
-    impacts = [s for s in sentences(named) if _IMPACT.search(s) and re.search(r"\b[VP]\d\b", s)]
+    impacts = [s for s in sentences(named) if describes_impact(s)]
     if len(impacts) > 1:
         found.append(f"only the first impact is encoded; the report describes {len(impacts)} impact sentences")
     return found

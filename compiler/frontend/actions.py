@@ -1,0 +1,263 @@
+"""A participant's driving actions up to the first impact, read from the pieces of text about it.
+
+The conventions are the paper's (and its ground truth's):
+- an action the driver intended, planned or was waiting to do is not an action ("waiting to turn left" is a
+  stop, not a turn); an evasive move ("braked and steered left to avoid V2") is not one either;
+- an intention to go straight through a junction is what the vehicle did: it holds its course into the
+  junction, where it is struck, so it is `go_across`;
+- a vehicle starts with `follow_lane` when the report shows it moving before its first action; one that was
+  stopped, parked or came from off the road starts with that;
+- a vehicle the report never shows moving or acting before the impact has `unknown` actions, not a guess.
+"""
+
+from __future__ import annotations
+
+import re
+
+from sovarc.compiler.frontend.clauses import Piece
+from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
+
+_TURN = (
+    r"\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
+    r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
+    r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
+)
+_PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
+    (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
+    (ActionKind.TURN_LEFT, re.compile(_TURN.format("left"), re.I)),
+    (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(r"\bchang(?:e|ed|es|ing) lanes?\b|\blane change\b|\bmerg(?:e|ed|es|ing)\b", re.I),
+    ),
+    (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull)\w*(?: \w+){0,6}? (?:in)?to the (?:left|right) lane\b"
+            r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
+            r"(?:the|an?) (?:\w+ ){0,2}lane\b",
+            re.I,
+        ),
+    ),
+    (
+        ActionKind.RETROGRADE,
+        re.compile(
+            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
+            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re) ?line)"
+            r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side)\b"
+            r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
+            r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
+            r"|\bcross(?:ed|ing) (?:over )?(?:the )?(?:\w+ )?lane lines? (?:to|on) the left"
+            r"|\bcrossed over\b(?! the (?:curb|median))",
+            re.I,
+        ),
+    ),
+    (
+        ActionKind.DRIVE_INTO,
+        re.compile(
+            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
+            r"(?:drive(?:way)?|parking|lot|parked)"
+            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|pull(?:ed|ing)? out of|proceed(?:ed|ing)? out of"
+            r"|back(?:ed|ing)? out of|out of) (?:a|the|an|its) (?:private )?"
+            r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
+            r"|plaza|premises|property|residence|garage)"
+            r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
+            r"|\bfrom (?:a|the) (?:private )?drive(?:way)?\b"
+            r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
+            r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
+            re.I,
+        ),
+    ),
+    (
+        ActionKind.DRIVE_OFF,
+        re.compile(
+            r"\bran off the road|\bdeparted the road|\bleft the road|\bonto the shoulder"
+            r"|\bover the right (?:lane |edge |fog )?line"
+            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road",
+            re.I,
+        ),
+    ),
+    (
+        ActionKind.GO_ACROSS,
+        re.compile(
+            r"\bcontinu(?:ed|ing|es|e) (?:through|thru|across|on through)\b"
+            r"|\bcross(?:ed|ing|es)? (?:over )?(?:the|an|this) intersection|\b(?:through|thru|across) the intersection"
+            r"|\bproceed(?:ed|ing|s)? (?:through|thru|across)\b|\benter(?:ed|ing|s) the intersection\b"
+            r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b",
+            re.I,
+        ),
+    ),
+    (
+        ActionKind.STOP,
+        re.compile(
+            r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
+            r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
+            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b",
+            re.I,
+        ),
+    ),
+]
+# Going straight is crossing only where the vehicle's own sentences put it at the junction.
+_STRAIGHT = re.compile(
+    r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"
+    r"|\bproceed(?:ed|ing|s)? straight\b",
+    re.I,
+)
+# A turn said without its side ("before turning", "began the turn") is the one the driver meant to make.
+_BARE_TURN = re.compile(
+    r"\b(?:turning|turned|began (?:to|its|the) turn|made the turn|making the turn|started (?:to turn|turning))\b"
+    r"(?! (?:to the |to its )?(?:left|right|around|green|red))",
+    re.I,
+)
+_MEANT_TURN = re.compile(r"\b(?:turn(?:ing)?|make a|making a) (left|right)\b", re.I)
+# On a road with no junction, a vehicle that "entered the roadway" came from off the road.
+_ENTERED_ROAD = re.compile(r"\benter(?:ed|ing|s) the (?:road(?:way)?|street|highway)\b", re.I)
+# Into the lanes of the other direction: retrograde for a vehicle heading the other way.
+_INTO_LANES = re.compile(
+    r"\b(?:veer|swerv|cross|drift|went|go|travel|encroach|mov|steer|skid)\w*\b[^.,;]{0,40}?\b(?:in)?to the "
+    r"(north|south|east|west)bound (?:travel )?lanes?"
+    r"|\benter(?:ed|ing|s) the (north|south|east|west)bound (?:travel )?lane",
+    re.I,
+)
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+# What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
+_INTENT = re.compile(
+    r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
+    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;()]*)",
+    re.I,
+)
+_INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
+_EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
+# "intending to go straight through the intersection": the vehicle held its course (see the module's note)
+_STRAIGHT_ON = re.compile(r"^ (?:to|on) (?:go|going|continu\w*|proceed\w*|travel\w*|cross\w*)\b", re.I)
+_TRAVELLING = re.compile(
+    r"\b(?:travel(?:l)?(?:ed|ing|s)?|approach(?:ed|ing|es)?|driving|drove|proceed(?:ed|ing|s)?|head(?:ed|ing)|going"
+    r"|negotiat(?:ed|ing)|moving|continu(?:ed|ing)|(?:was|were) (?:north|south|east|west)bound)\b",
+    re.I,
+)
+# What shows the report describing a participant: what it was ("V2, a 2000 Honda"), where it went or how.
+_DESCRIBED = re.compile(
+    r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
+    r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
+    re.I,
+)
+_JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
+_STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
+_MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
+
+
+def what_was_done(text: str) -> str:
+    """The text without what a driver only intended or did to avoid the crash."""
+
+    def intent(m: re.Match[str]) -> str:
+        keep = m.group("lead").lower() == "intending" or m.group("lead").lower().startswith("intend")
+        return m.group(0) if keep and _STRAIGHT_ON.match(m.group("what")) else m.group("lead")
+
+    text = _EVASIVE.sub(" ", text)
+    text = _INTENDED_MOVE.sub(" ", text)
+    return _INTENT.sub(intent, text)
+
+
+def _before(piece: Piece) -> str:
+    """The sentence up to the piece."""
+    return piece.context[: max(0, piece.context.find(piece.text))]
+
+
+def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown) -> list[tuple[int, Action]]:
+    at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
+    near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
+    meant = [m.group(1).lower() for p in pieces for i in _INTENT.finditer(p.text) for m in _MEANT_TURN.finditer(i[0])]
+    found: list[tuple[int, Action]] = []
+    for piece in pieces:
+        done = what_was_done(piece.text)
+        if near:
+            found += [(piece.at + m.start(), Action(ActionKind.GO_ACROSS)) for m in _STRAIGHT.finditer(done)]
+        if len(set(meant)) == 1:
+            side = ActionKind.TURN_LEFT if meant[0] == "left" else ActionKind.TURN_RIGHT
+            found += [
+                (piece.at + m.start(), Action(side))
+                for m in _BARE_TURN.finditer(done)
+                if not re.search(r"\bbefore\b[^,.;]*$", _before(piece) + done[: m.start()], re.I)  # "before it began"
+            ]
+        for kind, pattern in _PATTERNS:
+            for m in pattern.finditer(done):
+                to: Side | None = None
+                if kind is ActionKind.CHANGE_LANE:  # to the side named last: "from the left lane into the right"
+                    sides = re.findall(r"\b(left|right)\b", done[m.start() : max(m.end(), m.start() + 60)], re.I)
+                    if not sides:
+                        continue
+                    to = Side(sides[-1].lower() if m.end() - m.start() > 20 else sides[0].lower())
+                if kind is ActionKind.GO_ACROSS and not at_junction:
+                    continue
+                found.append((piece.at + m.start(), Action(kind, to)))
+        if road is RoadKind.STRAIGHT:
+            found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
+    # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
+    if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
+        for piece in pieces:
+            found += [
+                (piece.at + m.start(), Action(ActionKind.RETROGRADE))
+                for m in _INTO_LANES.finditer(what_was_done(piece.text))
+                if (m.group(1) or m.group(2)).lower() == _OPPOSITE[heading.value]
+            ]
+    if len(set(meant)) == 1:  # one meant to turn and drove into the junction: that is its turn
+        side = ActionKind.TURN_LEFT if meant[0] == "left" else ActionKind.TURN_RIGHT
+        found = [(at, Action(side) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
+    return found
+
+
+def read_actions(
+    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, struck_first: bool
+) -> tuple[Action, ...] | Unknown:
+    """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
+    `struck_first` says whether its front made the impact."""
+    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
+        return UNKNOWN
+    found = _found(pieces, road, heading)
+    kinds = {a.kind for _, a in found}
+    turning = kinds & set(_MANOEUVRES)
+    if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
+        found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
+    found.sort(key=lambda item: item[0])
+    if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
+        # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
+        found = [(at, a) for at, a in found if at >= entered[0] or a.kind is ActionKind.STOP]
+    if (
+        found
+        and found[-1][1].kind is ActionKind.STOP
+        and struck_first
+        and road is RoadKind.INTERSECTION
+        and not kinds & set(_MANOEUVRES)
+    ):
+        # It stopped, then its front struck another: it moved off again, and with no turn it went across.
+        found.append((found[-1][0] + 1, Action(ActionKind.GO_ACROSS)))
+    ordered: list[Action] = []
+    for i, (_, action) in enumerate(found):
+        later = [a for _, a in found[i + 1 :]]
+        if ordered and ordered[-1] == action:
+            continue
+        if action.kind in (*_MANOEUVRES, ActionKind.DRIVE_INTO) and action in later:  # the plan, then the deed
+            continue
+        ordered.append(action)
+    # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
+    # one the report shows moving before it stopped drove first.
+    moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
+    moved_first = (
+        bool(ordered) and ordered[0].kind is ActionKind.STOP and moving_at is not None and moving_at < found[0][0]
+    )
+    if not ordered or ordered[0].kind not in _STANDING or moved_first:
+        ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
+    return tuple(ordered)
+
+
+_PRECRASH_LEFT = re.compile(
+    r"critical pre-?crash event\b[^.]*?\b(V\d)\b[^.]*?\b(?:over the lane line on (?:the )?left side|"
+    r"lane line on left side|cross(?:ed|ing)? (?:the )?cent(?:er|re) ?line|left of cent(?:er|re))",
+    re.I,
+)
+
+
+def precrash_wrong_way(sents: list[str]) -> set[str]:
+    """Vehicles whose coded pre-crash event ("travelling over the lane line on the left side"), often written
+    after the impact, says they went into the opposing lane."""
+    return {m.group(1) for s in sents if (m := _PRECRASH_LEFT.search(s))}

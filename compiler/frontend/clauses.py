@@ -1,0 +1,104 @@
+"""Who did what: a report's sentences cut into pieces, each given to the participants it is about.
+
+Police summaries name a participant as the subject of a clause ("V2 was traveling north") and then go on
+with pronouns ("As he crossed the intersection he was contacted ...") or with other road users ("as a
+non-contact school bus was slowing down to make a right turn"). A piece runs from one subject to the next:
+- a participant named as an object ("behind V2", "struck V1", "the front of V2") does not start a piece;
+- a sentence with no subject of its own (he, she, the driver) belongs to the last sentence's subject;
+- another road user (a non-contact vehicle, traffic, an emergency vehicle) starts a piece that belongs to
+  nobody, so its actions are not given to a participant;
+- "both vehicles" and "the two vehicles" start a piece that belongs to every vehicle.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+# Words right before a participant's name that make it an object, not the subject of what follows.
+_OBJECT_BEFORE = re.compile(
+    r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|toward|towards|into|past|struck|hit|impacted|contacted|"
+    r"striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|pass|passed|passing|"
+    r"followed|following)|'s) (?:the )?$",
+    re.IGNORECASE,
+)
+_SUBJECT_OF = re.compile(r"\b(?:driver|operator|occupant)s? of (?:the )?$", re.IGNORECASE)
+# Other road users: what follows them, up to the next participant, is not a participant's doing.
+_OTHER = re.compile(
+    r"\b(?:an?|another|the|other|one|several)\s+(?:(?:non-?contact|uninvolved|other|third|emergency|unknown|"
+    r"unidentified|lead|leading|school|fire|police)\s+)+(?:vehicles?|cars?|trucks?|bus(?:es)?|vans?|pickups?|"
+    r"motorists?|drivers?)\b"
+    r"|\b(?:an?|another)\s+(?:vehicles?|cars?|trucks?|motorists?)\b(?! (?:involved|[VP]\d))"
+    r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
+    r"|\b(?:vehicles|traffic)\b(?! (?:signal|light|control|device|lane|way|island|count|volume))",
+    re.IGNORECASE,
+)
+# An object described on the spot is the subject of the description: "struck V2, a 2000 Honda that was
+# traveling north", "restricted by V2 making the right turn".
+_ASIDE = re.compile(r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:which|that|who)\b|\w+ing\b)")
+_BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNORECASE)
+# Where a clause about another road user gives way to the subject's again: "stopped for traffic, then turned".
+_CLAUSE_END = re.compile(r",? (?:and )?then\b|;", re.IGNORECASE)
+_NAME = re.compile(r"\b[VP]\d\b")
+
+
+@dataclass(frozen=True)
+class Piece:
+    who: tuple[str, ...]  # empty: another road user's doing
+    text: str
+    at: int  # offset in the report's sentences joined by one space, for ordering
+    sentence: int  # index of its sentence
+    context: str  # the whole sentence
+
+
+def is_object(sentence: str, at: int) -> bool:
+    """Whether the participant named at `at` is an object ("behind V2", "struck V1"), not a subject."""
+    before = sentence[max(0, at - 40) : at]
+    return bool(_OBJECT_BEFORE.search(before)) and not _SUBJECT_OF.search(before)
+
+
+def _events(sentence: str, ids: list[str]) -> list[tuple[int, tuple[str, ...]]]:
+    """Where a piece starts in the sentence, and whose it is."""
+    found: list[tuple[int, tuple[str, ...]]] = []
+    for m in _NAME.finditer(sentence):
+        if m.group() in ids and (not is_object(sentence, m.start()) or _ASIDE.match(sentence, m.end())):
+            found.append((m.start(), (m.group(),)))
+    vehicles = tuple(pid for pid in ids if pid.startswith("V"))
+    found += [(m.start(), vehicles) for m in _BOTH.finditer(sentence)]
+    # Another road user right after a participant's name is an apposition ("V2, an unknown type van").
+    groups = [m.span() for m in _BOTH.finditer(sentence)]
+    found += [
+        (m.start(), ())
+        for m in _OTHER.finditer(sentence)
+        if not re.search(r"\b[VP]\d,? ?$", sentence[: m.start()]) and not any(a <= m.start() < b for a, b in groups)
+    ]
+    return sorted(found)
+
+
+def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
+    """Every sentence cut at each subject, each piece given to whom it is about (see the module's note)."""
+    out: list[Piece] = []
+    carry: tuple[str, ...] = ()
+    offset = 0
+    for index, sentence in enumerate(sents):
+        events = _events(sentence, ids)
+        who, start = carry, 0
+        for at, whom in list(events):
+            if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
+                back = next((w for a, w in reversed(events) if a < at and w), carry)
+                events.append((end.end(), back))
+        events.sort()
+        for at, whom in events:
+            if at > start and sentence[start:at].strip():
+                out.append(Piece(who, sentence[start:at], offset + start, index, sentence))
+            who, start = whom, at
+        out.append(Piece(who, sentence[start:], offset + start, index, sentence))
+        # The sentence's first participant is whom the next sentence's "he" or "the driver" means.
+        carry = next((whom for _, whom in events if whom), carry)
+        offset += len(sentence) + 1
+    return out
+
+
+def by_participant(parts: list[Piece], ids: list[str]) -> dict[str, list[Piece]]:
+    """Each participant's pieces, in report order."""
+    return {pid: [p for p in parts if pid in p.who] for pid in ids}

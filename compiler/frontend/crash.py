@@ -1,0 +1,162 @@
+"""Who struck whom, and how, from the sentence of the first impact.
+
+A police summary names the parts that met: "the front of V2 struck the left side of V1", "V1 was struck in
+the right side by the front of V2", "V1's front impacted V2's rear", "V1 struck V2 in rear with front".
+Each part is tied to a participant. The striker is the agent of a passive strike ("by the front of V2"),
+else the subject of an active one, else the one whose front met the other's side or rear. The crash type is
+the victim's part: its side (side), its rear (rear_end) or its front (frontal).
+"""
+
+from __future__ import annotations
+
+import re
+
+from sovarc.compiler.frontend.clauses import is_object
+from sovarc.dsl.ir import Crash, CrashType
+
+_V = r"(?:[VP]\d)"
+_WORD = (
+    r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumper|corner|plane|door|fender|wheel|"
+    r"quarter|panel|drivers?'?s?|passenger'?s?)"
+)
+_PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
+_STRIKE = (
+    r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-ended"
+    r"|ran into|crashed into|made contact (?:with|to))"
+)
+_OWNED = [
+    # the front of V2 (but not "in front of V1")
+    re.compile(r"(?<!\bin )(?<!\bin the )\b(?P<part>" + _PART + r") of (?:the )?(?P<v>" + _V + r")\b", re.I),
+    re.compile(r"\b(?P<v>" + _V + r")'s (?P<part>" + _PART + r")\b", re.I),  # V2's rear
+    # V2 in the left side, V1 was struck on the right side
+    re.compile(
+        r"\b(?P<v>" + _V + r")(?: was| were)?(?: \w+ed)? (?:in|on) (?:the |its |his |her )?(?P<part>" + _PART + r")\b",
+        re.I,
+    ),
+]
+# "with its front", "its front was struck", "contacting it's front to": the clause's subject.
+_OWN_PART = re.compile(
+    r"\b(?:with|using) (?:its |his |her |it's |the )?(?P<part>" + _PART + r")\b"
+    r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
+    re.I,
+)
+_AGENT = re.compile(
+    r"\b(?:struck|hit|impacted|contacted|rear-ended)\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
+    r"(?P<v>" + _V + r")\b",
+    re.I,
+)
+_AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
+_ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
+_PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
+_PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended)\b", re.I)
+_REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?P<b>" + _V + r")\b", re.I)
+_HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
+_FROM_BEHIND = re.compile(r"\bfrom behind\b", re.I)
+_RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
+
+
+def _kind(part: str) -> CrashType | None:
+    words = set(re.split(r"[- ]", part.lower()))
+    if words & {"side", "door", "panel", "fender", "quarter"} or ("plane" in words and "frontal" not in words):
+        return CrashType.SIDE
+    if words & {"rear", "back"} or ("end" in words and "front" not in words):
+        return CrashType.REAR_END
+    if words & {"front", "frontal"}:
+        return CrashType.FRONTAL
+    if words <= {"left", "right"}:  # "the front of V2 contacted the left of V1"
+        return CrashType.SIDE
+    return None
+
+
+def _names(text: str) -> list[str]:
+    return re.findall(r"\b" + _V + r"\b", text)
+
+
+def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType]]:
+    """(where, whose, what part) for every part the sentence ties to a participant."""
+    parts: list[tuple[int, str, CrashType]] = []
+    for pattern in _OWNED:
+        for m in pattern.finditer(sentence):
+            if (kind := _kind(m.group("part"))) is not None:
+                parts.append((m.start(), m.group("v"), kind))
+    for m in _OWN_PART.finditer(sentence):
+        kind = _kind(m.group("part") or m.group("part2"))
+        if subject is not None and kind is not None:
+            parts.append((m.start(), subject, kind))
+    return sorted(set(parts))
+
+
+def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, CrashType]]) -> str | None:
+    if agent := _AGENT.search(sentence) or _AGENT_OWNED.search(sentence):
+        return agent.group("v")
+    for m in _ACTIVE.finditer(sentence):  # the subject of an active strike: the last one named before it
+        named = [n for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)]
+        if named and not _PASSIVE.search(sentence, max(0, m.start() - 12), m.end()):
+            return named[-1].group()
+    if _PRONOUN_ACTIVE.search(sentence) and subject is not None:
+        return subject
+    fronts = [who for _, who, kind in parts if kind is CrashType.FRONTAL]
+    others = {who for _, who, kind in parts if kind is not CrashType.FRONTAL}
+    if front := next((w for w in fronts if w not in others), None):
+        return front
+    # "his vehicle ... before contacting the right rear corner of V2": the sentence's subject struck
+    return subject if others and subject is not None and subject not in others else None
+
+
+def _subject_like(sentence: str, name: re.Match[str]) -> bool:
+    """A name that can be the subject of a strike: not an object ("pass V2"), except as "the front of V2"."""
+    owner = re.search(r"\b" + _PART + r" of (?:the )?$", sentence[: name.start()], re.I)
+    return owner is not None or not is_object(sentence, name.start())
+
+
+def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
+    """The crash one sentence states, or None; `carry` is whom the sentence's pronouns mean when it names
+    no participant before them."""
+    names = _names(sentence)
+    # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
+    first = re.search(r"\b" + _V + r"\b", sentence)
+    pronoun = re.search(r"\b(?:it|he|she|its|his|her|it's)\b", sentence, re.I)
+    subject = first.group() if first and (pronoun is None or first.start() < pronoun.start()) else carry
+    if m := _REAR_ENDED.search(sentence):
+        return Crash(CrashType.REAR_END, m.group("a"), m.group("b"))
+    parts = _parts(sentence, subject)
+    striker = _striker(sentence, subject, parts)
+    head_on = _HEAD_ON.search(sentence) is not None
+    if striker is None:
+        if head_on:
+            return Crash(CrashType.FRONTAL)
+        return Crash(CrashType.SIDE) if _RIGHT_ANGLE.search(sentence) and not parts else None
+    victims = [(who, kind) for _, who, kind in parts if who != striker]
+    if victims:
+        victim, kind = victims[0]
+        return Crash(CrashType.FRONTAL if head_on else kind, striker, victim)
+    others = [n for n in names if n != striker]
+    victim = others[0] if others else (subject if subject != striker else None)
+    if victim is None:  # a single vehicle that struck something with its front ("struck a tree with its front")
+        own = [kind for _, who, kind in parts if who == striker]
+        return Crash(CrashType.FRONTAL, striker) if own == [CrashType.FRONTAL] else None
+    if _FROM_BEHIND.search(sentence):
+        return Crash(CrashType.REAR_END, striker, victim)
+    kind = CrashType.FRONTAL if head_on else _said_part(sentence)
+    if kind is None and "rear-ended" in sentence.lower():
+        kind = CrashType.REAR_END
+    return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)
+
+
+def _said_part(sentence: str) -> CrashType | None:
+    """The victim's part said without naming it again: "it was struck in the right side by the front of V2"."""
+    m = re.search(r"\b(?:struck|hit|impacted|contacted) (?:in|on) (?:the |its )?(" + _PART + r")\b", sentence, re.I)
+    return _kind(m.group(1)) if m else None
+
+
+def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash:
+    """The first impact's crash: read from its sentence (index `impact`), else from a later sentence that
+    restates it, else from an earlier one that says "head-on"."""
+    order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
+    for i in order:
+        crash = read_sentence(sents[i], carry if i == impact else None)
+        if crash is not None:
+            return crash
+    if any(_HEAD_ON.search(s) for s in sents[: impact + 1]):
+        return Crash(CrashType.FRONTAL)
+    return Crash()
