@@ -26,8 +26,8 @@ _SUBJECT_OF = re.compile(r"\b(?:driver|operator|occupant)s? of (?:the )?$", re.I
 # Other road users: what follows them, up to the next participant, is not a participant's doing.
 _OTHER = re.compile(
     r"\b(?:an?|another|the|other|one|several)\s+(?:(?:non-?contact|uninvolved|other|third|emergency|unknown|"
-    r"unidentified|lead|leading|school|fire|police)\s+)+(?:vehicles?|cars?|trucks?|bus(?:es)?|vans?|pickups?|"
-    r"motorists?|drivers?)\b"
+    r"unidentified|lead|leading|school|fire|police)\s+)+(?:[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|bus(?:es)?|"
+    r"vans?|pickups?|motorists?|drivers?|motorcycles?|tractor-trailers?|semis?)\b"
     r"|\b(?:an?|another)\s+(?:vehicles?|cars?|trucks?|motorists?)\b(?! (?:involved|[VP]\d))"
     r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
     r"|\b(?:vehicles|traffic)\b(?! (?:signal|light|control|device|lane|way|island|count|volume))",

@@ -136,7 +136,8 @@ def extract_road_kind(text: str) -> RoadKind:
 # A heading said with a verb of motion ("traveling west", "was eastbound") is the vehicle's own; a lane's
 # direction ("in the westbound lane") is where it was; "to travel westbound", "a westbound left turn",
 # "onto a northbound road", "two westbound and two eastbound lanes" and "facing east at rest" are not its heading.
-_COMPASS = r"(north|south|east|west)(?:bound|ward|erly)?(?![a-z/-])"
+# "northwest" counts as north, as the ground truth reads it
+_COMPASS = r"(north|south|east|west)(?:east|west)?(?:bound|ward|erly)?(?![a-z/-])"
 _MOVING_HEADING = re.compile(
     r"\b(?:travel\w*|driv(?:ing|es|e)|drove|head(?:ed|ing)|going|proceed\w*|moving|was|were|continu\w*|approach\w*"
     r"|negotiat\w*|stopped facing|(?:was|were) (?:\w+ )?facing)(?: due| in an?| generally)? " + _COMPASS,
@@ -159,6 +160,8 @@ def _heading(pieces: list[Piece]) -> Heading | Unknown:
             text = what_was_done(piece.text)
             for m in pattern.finditer(text):
                 if pattern is _BOUND and _NOT_HEADING.search(text[: m.start()]):
+                    continue
+                if re.search(r"\bto $", text[: m.start()]):  # "to travel westbound" is where it was going
                     continue
                 return Heading(m.group(1).lower())
     return UNKNOWN

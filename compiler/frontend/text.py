@@ -19,7 +19,8 @@ _IMPACT = re.compile(
 # An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle".
 _NO_IMPACT = re.compile(
     r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
-    r"(?:collision|impact|contact|crash|striking|hitting)\b",
+    r"(?:collision|impact|contact|crash|striking|hitting)\b"
+    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b",  # the scene, not the participants meeting
     re.IGNORECASE,
 )
 
