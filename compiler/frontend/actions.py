@@ -83,7 +83,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"\bcontinu(?:ed|ing|es|e) (?:through|thru|across|on through)\b"
             r"|\bcross(?:ed|ing|es)? (?:over )?(?:the|an|this) intersection|\b(?:through|thru|across) the intersection"
             r"|\bproceed(?:ed|ing|s)? (?:through|thru|across)\b|\benter(?:ed|ing|s) the intersection\b"
-            r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b",
+            r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b"
+            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b",
             re.I,
         ),
     ),

@@ -21,7 +21,7 @@ from functools import cache
 from importlib.resources import files
 from typing import Any
 
-from sovarc.compiler.frontend.text import normalize_names, sentences, up_to_first_impact
+from sovarc.compiler.frontend.text import prepare, sentences, up_to_first_impact
 
 PROMPT_FILES = ("system.md", "environment.md", "road.md", "dynamic.md")
 MAX_LANES = 8
@@ -77,7 +77,8 @@ def system_prompt() -> str:
     parts = [(_prompt_dir() / name).read_text(encoding="utf-8").strip() for name in PROMPT_FILES]
     parts.append("## Worked examples")
     for ex in examples():
-        parts.append(f"Report:\n{ex.narrative}\nAnswer:\n{compact_json(answer_view(ex.answer))}")
+        # shown prepared, as the model will see each report
+        parts.append(f"Report:\n{prepared_narrative(ex.narrative)}\nAnswer:\n{compact_json(answer_view(ex.answer))}")
     return "\n\n".join(parts) + "\n"
 
 
@@ -110,8 +111,8 @@ def compact_json(value: object) -> str:
 
 
 def prepared_narrative(text: str) -> str:
-    """The pre-processing step: participants named V1/P1, and the narrative up to the first impact."""
-    return " ".join(up_to_first_impact(sentences(normalize_names(text))))
+    """The pre-processing step: each participant under one name (V1, P1), the narrative up to the first impact."""
+    return " ".join(up_to_first_impact(sentences(prepare(text))))
 
 
 def user_prompt(narrative: str, ids: list[str]) -> str:

@@ -16,14 +16,7 @@ from dataclasses import replace
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash
-from sovarc.compiler.frontend.text import (
-    first_impact,
-    name_parked,
-    normalize_names,
-    participants,
-    resolve_aliases,
-    sentences,
-)
+from sovarc.compiler.frontend.text import first_impact, participants, prepare, sentences
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -258,7 +251,7 @@ _WALKING = re.compile(
 
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
-    named = name_parked(resolve_aliases(normalize_names(text)))
+    named = prepare(text)
     sents = sentences(named)
     ids = participants(named)
     impact = first_impact(sents)

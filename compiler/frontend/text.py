@@ -98,6 +98,11 @@ def name_parked(text: str) -> str:
     return text.replace(m.group(), f"V{max(taken, default=0) + 1}, {m.group()},", 1)
 
 
+def prepare(text: str) -> str:
+    """Every participant under one name: V1/P1 numbering, makes and body words, an unnumbered parked victim."""
+    return name_parked(resolve_aliases(normalize_names(text)))
+
+
 def sentences(text: str) -> list[str]:
     """Split on sentence ends, also where reports omit the space after a period."""
     text = re.sub(r"\s+", " ", text)
