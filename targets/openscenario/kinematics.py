@@ -186,9 +186,9 @@ def contact_point(a: Polygon, b: Polygon) -> Point:
 
 
 def faces_at(entity: Entity, pose: Pose, point: Point) -> tuple[str, ...]:
-    """The faces of the body a point is on: the nearest one first, then the adjacent face when the
-    point is near that corner (beyond a quarter of the length or width from the centre), as the
-    SUMO oracle counts them, so that both targets judge a corner hit alike."""
+    """The faces of the body a point is on: the nearest one, and the adjacent face when the point
+    is near that corner (beyond a quarter of the length or width from the centre), as the SUMO
+    oracle counts and names them ('front-left', never 'left-front'), so that both judge alike."""
     c, s = math.cos(pose.h), math.sin(pose.h)
     dx, dy = point[0] - pose.x, point[1] - pose.y
     u = c * dx + s * dy - entity.center_x  # along the body, from its centre
@@ -198,4 +198,4 @@ def faces_at(entity: Entity, pose: Pose, point: Point) -> tuple[str, ...]:
     side = "left" if nv >= 0 else "right"
     if abs(nu) >= abs(nv):
         return (end, side) if abs(nv) >= 0.5 else (end,)
-    return (side, end) if abs(nu) >= 0.5 else (side,)
+    return (end, side) if abs(nu) >= 0.5 else (side,)

@@ -15,7 +15,7 @@ from sovarc.targets.openscenario import VERSIONS, check, emit_files
 from sovarc.targets.verdict import Verdict
 
 from tests.targets.openscenario.conftest import Emitter
-from tests.targets.openscenario.plans import CASES, with_samples
+from tests.targets.openscenario.plans import CASES, straight, with_samples
 
 pytestmark = pytest.mark.slow  # needs SUMO (netconvert writes the .xodr)
 
@@ -149,9 +149,14 @@ def test_swapped_striker_and_victim_hit_with_the_wrong_face(emitted: Emitter, tm
     }
 
 
-def test_an_impact_declared_too_early_is_not_the_first_contact(emitted: Emitter, tmp_path: Path) -> None:
-    reasons = failed(mutated(emitted, tmp_path, "head_on", lambda r: _param(r, "sovarc_impact_time", "2")))
-    assert reasons["first_contact"] == "V1 and V2 first touch at t=3.00 s, not at the impact t=2 s"
+def test_an_impact_declared_too_early_finds_the_bodies_away_from_the_collision_area(
+    emitted: Emitter, tmp_path: Path
+) -> None:
+    verdict = mutated(emitted, tmp_path, "head_on", lambda r: _param(r, "sovarc_impact_time", "2"))
+    reasons = failed(verdict)
+    assert set(reasons) == {"collision_area"}  # they still meet in C_A, a second later
+    assert reasons["collision_area"] == "at t=2 s not both in C_A: V1 is 26.82 m from it; V2 is 20.12 m from it"
+    assert verdict.facts["first_contact_time"] == pytest.approx(3.0, abs=0.03)
 
 
 def test_a_missing_stop_trigger_would_let_a_player_run_forever(emitted: Emitter, tmp_path: Path) -> None:
@@ -192,6 +197,22 @@ def test_a_plan_whose_pair_touches_too_early_fails(tmp_path: Path) -> None:
     verdict = check(emit_files(early, tmp_path).xosc, early)
     reasons = {f.check: f.message for f in verdict.failures}
     assert reasons["first_contact"].startswith("V1 and V2 first touch at t=2.6")
+    assert reasons["first_contact"].endswith(
+        "before the impact t=3 s, outside C_A: V1 is 7.60 m from it; V2 is 3.40 m from it"
+    )
+    assert verdict.facts["victim_face"] == "rear"  # the crash is judged where it happens
+
+
+def test_an_oblique_corner_that_touches_first_inside_the_collision_area_passes(tmp_path: Path) -> None:
+    """A slow striker 20 degrees off square: its front-left corner meets the victim's side about
+    0.35 s before its bumper centre does, 0.3 m from C_A's centre. That is the planned crash."""
+    plan = CASES["t_bone"]()
+    t_hit, (x, y) = plan.impact.time, plan.impact.point
+    oblique = with_samples(plan, "V1", lambda s: Sample(s.t, *straight(x, y, 20.0, 1.0, t_hit)(s.t)))
+    verdict = check(emit_files(oblique, tmp_path).xosc, oblique)
+    assert verdict.passed, verdict.dumps()
+    assert verdict.facts["first_contact_time"] == pytest.approx(t_hit - 0.33, abs=0.03)
+    assert verdict.facts["striker_face"] == "front-left" and verdict.facts["victim_face"] == "front-right"
 
 
 def test_bystanders_that_collide_before_the_impact_are_found(tmp_path: Path) -> None:
