@@ -78,6 +78,14 @@ def test_a_schema_violation_is_named_with_its_line(emitted: Emitter, tmp_path: P
     assert "vehicleCategory" in message
 
 
+def test_a_header_that_names_another_version_fails_that_version_s_schema(emitted: Emitter, tmp_path: Path) -> None:
+    older = failed(mutated(emitted, tmp_path, "t_bone", lambda r: r.find("FileHeader").set("revMinor", "0")))
+    assert older["xsd"].startswith("not valid OpenSCENARIO 1.0: line ")
+    assert "Element 'Vehicle', attribute 'mass'" in older["xsd"]  # a 1.1 attribute
+    unknown = failed(mutated(emitted, tmp_path, "t_bone", lambda r: r.find("FileHeader").set("revMinor", "9")))
+    assert unknown["xsd"] == "OpenSCENARIO 1.9 is not a version the oracle knows (1.0, 1.1, 1.2, 1.3)"
+
+
 def test_a_victim_that_arrives_late_misses_the_collision_area(emitted: Emitter, tmp_path: Path) -> None:
     def delay_victim(root: etree._Element) -> None:
         for vertex in _vertices(root, "V2"):
@@ -201,6 +209,29 @@ def test_a_plan_whose_pair_touches_too_early_fails(tmp_path: Path) -> None:
         "before the impact t=3 s, outside C_A: V1 is 7.60 m from it; V2 is 3.40 m from it"
     )
     assert verdict.facts["victim_face"] == "rear"  # the crash is judged where it happens
+
+
+def test_a_pair_that_overlaps_from_the_start_fails(tmp_path: Path) -> None:
+    plan = CASES["rear_end"]()
+    start = plan.trajectory("V1").samples[0]
+    # The stopped victim stands where the striker starts: the two are one body at t=0.
+    stacked = with_samples(plan, "V2", lambda s: replace(s, x=start.x + 1.0))
+    reasons = {f.check: f.message for f in check(emit_files(stacked, tmp_path).xosc, stacked).failures}
+    assert reasons["first_contact"].startswith(
+        "V1 and V2 first touch at t=0.00 s, before the impact t=3 s, outside C_A"
+    )
+
+
+def test_bodies_that_touch_but_never_overlap_are_no_collision_for_a_player(tmp_path: Path) -> None:
+    plan = CASES["rear_end"]()
+    x_stop = plan.impact.point[0] - 0.005  # the striker halts 5 mm short of the victim's rear
+    halted = with_samples(plan, "V1", lambda s: replace(s, x=min(s.x, x_stop)))
+    reasons = {f.check: f.message for f in check(emit_files(halted, tmp_path).xosc, halted).failures}
+    assert (
+        reasons["overlap"]
+        == "the bounding boxes of V1 and V2 never overlap after the impact: a player sees no collision"
+    )
+    assert "first_contact" not in reasons  # 5 mm is a touch
 
 
 def test_an_oblique_corner_that_touches_first_inside_the_collision_area_passes(tmp_path: Path) -> None:
