@@ -124,7 +124,7 @@ _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 # What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
 _INTENT = re.compile(
     r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;()]*)",
+    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;]*)",
     re.I,
 )
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)

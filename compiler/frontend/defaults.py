@@ -51,14 +51,15 @@ _OPPOSITE[Heading.WEST] = Heading.EAST
 
 
 def heading_from_crash(s: Scenario) -> tuple[Scenario, list[str]]:
-    """Two vehicles in a rear-end crash travel the same way; head-on, opposite ways (unless one went wrong-way,
-    turned or crossed, when the geometry says nothing)."""
+    """Two vehicles in a rear-end crash travel the same way; head-on, opposite ways, also when one of them had
+    gone into the other's lane (unless one turned or crossed, when the geometry says nothing)."""
     c = s.crash
     vehicles = [p for p in s.participants if p.role is Role.VEHICLE]
     if len(vehicles) != 2 or c.type not in (CrashType.REAR_END, CrashType.FRONTAL):
         return s, []
     known = [p for p in vehicles if not isinstance(p.heading, Unknown)]
-    if len(known) != 1 or any(a.kind not in _STRAIGHT_ON for p in vehicles for a in p.known_actions):
+    straight_on = (*_STRAIGHT_ON, ActionKind.RETROGRADE) if c.type is CrashType.FRONTAL else _STRAIGHT_ON
+    if len(known) != 1 or any(a.kind not in straight_on for p in vehicles for a in p.known_actions):
         return s, []
     other = next(p for p in vehicles if isinstance(p.heading, Unknown))
     heading = known[0].heading if c.type is CrashType.REAR_END else _OPPOSITE[known[0].heading]

@@ -130,31 +130,36 @@ def extract_road_kind(text: str) -> RoadKind:
 # direction ("in the westbound lane") is where it was; "to travel westbound", "a westbound left turn",
 # "onto a northbound road", "two westbound and two eastbound lanes" and "facing east at rest" are not its heading.
 # "northwest" counts as north, as the ground truth reads it
-_COMPASS = r"(north|south|east|west)(?:east|west)?(?:bound|ward|erly)?(?![a-z/-])"
+_COMPASS = r"(north|south|east|west)(?:east|west)?(?: ?bound|ward|erly)?(?![a-z/-])"
 _MOVING_HEADING = re.compile(
     r"\b(?:travel\w*|driv(?:ing|es|e)|drove|head(?:ed|ing)|going|proceed\w*|moving|was|were|continu\w*|approach\w*"
     r"|negotiat\w*|stopped facing|(?:was|were) (?:\w+ )?facing)(?: due| in an?| generally)? " + _COMPASS,
     re.I,
 )
 _FACING = re.compile(r"(?<!rest )(?<!rest, )\bfacing (?:due |generally )?" + _COMPASS, re.I)
-_LANE_HEADING = re.compile(r"\b(?:in|on|within) (?:the|its|his|her) (?:\w+ )?(north|south|east|west)bound\b", re.I)
+_LANE_HEADING = re.compile(r"\b(?:in|on|within) (?:the|its|his|her) (?:\w+ )?(north|south|east|west) ?bound\b", re.I)
 _NOT_HEADING = re.compile(
     r"\b(?:to (?:travel|go|head|proceed|turn)|onto|into|toward|towards)\b[^.,;]*?$"
-    r"|\b(?:\d|one|two|three|four|both)(?: \w+)? $",
+    r"|\b(?:\d|one|two|three|four|five|both) $",
     re.I,
 )
-_BOUND = re.compile(r"\b(north|south|east|west)bound\b(?! (?:and|or|/)\b)(?!(?: \w+)? (?:left|right|u)[- ]?turn)", re.I)
+_BOUND = re.compile(
+    r"\b(north|south|east|west) ?bound\b(?! (?:and|or|/)\b)(?!(?: \w+)? (?:left|right|u)[- ]?turn)", re.I
+)
 
 
-def _heading(pieces: list[Piece]) -> Heading | Unknown:
-    """The heading the pieces state, the surest way of saying it first (see above)."""
-    for pattern in (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING):
+def _heading(pieces: list[Piece], after_impact: bool = False) -> Heading | Unknown:
+    """The heading the pieces state, the surest way of saying it first (see above). After the impact only a
+    verb of motion counts: vehicles spin, come to rest facing anywhere and end up in other lanes."""
+    for pattern in (_MOVING_HEADING,) if after_impact else (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING):
         for piece in pieces:
             text = what_was_done(piece.text)
             for m in pattern.finditer(text):
                 if pattern is _BOUND and _NOT_HEADING.search(text[: m.start()]):
                     continue
                 if re.search(r"\bto $", text[: m.start()]):  # "to travel westbound" is where it was going
+                    continue
+                if after_impact and re.search(r"\brest\b", text[max(0, m.start() - 20) : m.start()]):
                     continue
                 return Heading(m.group(1).lower())
     return UNKNOWN
@@ -269,7 +274,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
         late = [p for p in mine[pid] if p not in early]
         heading = _heading(early)
-        heading = _heading(late) if isinstance(heading, Unknown) else heading
+        heading = _heading(late, after_impact=True) if isinstance(heading, Unknown) else heading
         lane = _lane_of(early, lanes)
         lane = _lane_of(late, lanes) if isinstance(lane, Unknown) else lane
         if any(_PARKED.search(p.text) for p in early):

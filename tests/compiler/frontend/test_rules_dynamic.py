@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend.clauses import by_participant, pieces
 from sovarc.compiler.frontend.crash import read_sentence
+from sovarc.compiler.frontend.defaults import apply_defaults
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import first_impact, name_parked, normalize_names, resolve_aliases, sentences
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType, Scenario
@@ -193,6 +194,19 @@ def test_a_pedestrian_crossing_is_struck_from_the_side() -> None:
 )
 def test_the_heading_is_the_vehicles_own_course(text: str, v1: str) -> None:
     assert str(_reading(text).participant("V1").heading) == v1
+
+
+def test_after_the_impact_only_a_verb_of_motion_gives_a_heading() -> None:
+    s = _reading(
+        "V1, a 2004 Kia, was stopped. V2 struck V1. V1 spun and came to rest facing east in the east bound lane."
+    )
+    assert s.participant("V1").heading == UNKNOWN
+    assert _reading("V1 was traveling in the east bound lane. V1 hit V2.").participant("V1").heading == "east"
+
+
+def test_head_on_with_a_wrong_way_vehicle_the_other_came_the_other_way() -> None:
+    s = apply_defaults(_reading("V1 was westbound and crossed the centerline. The front of V1 struck the front of V2."))
+    assert s.participant("V2").heading == "east" and "V2.heading" in s.provenance.assumed
 
 
 def test_heading_and_lane_may_come_after_the_impact() -> None:
