@@ -19,8 +19,9 @@ _STANDING_STARTS = (ActionKind.STOP, ActionKind.DRIVE_INTO)
 
 
 def lane_on_two_lane_road(s: Scenario) -> tuple[Scenario, list[str]]:
-    """On a road with one lane in each direction, a vehicle driving in its own direction is in lane 1."""
-    if s.road.lanes != 2:
+    """On a road with one lane in each direction (or a one-lane road), a vehicle driving in its own direction is
+    in lane 1."""
+    if s.road.lanes not in (1, 2):
         return s, []
     assumed: list[str] = []
     people: list[Participant] = []

@@ -176,7 +176,17 @@ def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
         return max(1, lanes // 2)
     if lanes == 2 and re.search(r"\b(?:in|within) the (?:north|south|east|west)bound (?:travel )?lane\b", text, re.I):
         return 1  # a road with one lane each way
+    if _ONE_LANE_ROAD.search(text):  # its own road has one lane its way, whatever the widest road has
+        return 1
     return UNKNOWN
+
+
+_ONE_LANE_ROAD = re.compile(
+    r"\b(?:travel\w*|driv\w*|head\w*|was|were|proceed\w*) (?:\w+ ){0,2}(?:on|along) (?:a|the) (?:[\w-]+,? ){0,3}?"
+    r"(?:roadway|road|street|highway) with one lane (?:of travel )?(?:in each|each|per|in either) direction"
+    r"|\b(?:on|along) (?:a|the) one-way (?:roadway|road|street) with one lane\b",
+    re.I,
+)
 
 
 def _lane_of(pieces: list[Piece], lanes: int | Unknown) -> int | Unknown:
@@ -200,6 +210,7 @@ _SAME_WAY = re.compile(
     r"|\b(V\d)\b[^.]*?\b(?:behind|following|ahead of|in back of) (V\d)\b",
     re.IGNORECASE,
 )
+_SAME_LANE = re.compile(r"\b(V\d)\b[^.]*?\bin the same lane\b[^.]*?\b(V\d)\b", re.IGNORECASE)
 _BOTH = re.compile(
     r"\b(V\d)\b[^.]*?\band (?:the )?(V\d)\b[^.]*?\bwere (?:both )?(?:\w+ )?(?:traveling|travelling|driving|heading|"
     r"proceeding|going) (?:in an? )?(north|south|east|west)",
@@ -208,13 +219,20 @@ _BOTH = re.compile(
 
 
 def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
-    """Headings stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... behind V2"."""
+    """Headings and lanes stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... behind V2",
+    "V2 was stopped in the same lane ahead of V1"."""
     heading = {p.id: p.heading for p in people}
+    lane = {p.id: p.lane for p in people}
+    people_by = {p.id: p for p in people}
     for sentence in sents:
         if m := _BOTH.search(sentence):
             for pid in m.group(1, 2):
                 if isinstance(heading.get(pid), Unknown):
                     heading[pid] = Heading(m.group(3).lower())
+        if (m := _SAME_LANE.search(sentence)) and m.group(1) != m.group(2):
+            a, b = people_by[m.group(1)], people_by[m.group(2)]
+            lane[a.id] = lane[a.id] if not isinstance(lane[a.id], Unknown) else lane[b.id]
+            lane[b.id] = lane[b.id] if not isinstance(lane[b.id], Unknown) else lane[a.id]
         if m := _SAME_WAY.search(sentence):
             a, b = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
             if a in heading and b in heading:
@@ -222,7 +240,7 @@ def _shared_headings(sents: list[str], people: list[Participant]) -> list[Partic
                     heading[a] = heading[b]
                 elif isinstance(heading[b], Unknown):
                     heading[b] = heading[a]
-    return [replace(p, heading=heading[p.id]) for p in people]
+    return [replace(p, heading=heading[p.id], lane=lane[p.id]) for p in people]
 
 
 _SCENE = re.compile(

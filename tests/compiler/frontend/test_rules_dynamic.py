@@ -229,6 +229,19 @@ def test_lane_numbers_in_their_forms() -> None:
         assert _reading(f"V1 was traveling east in {phrase}. V2 struck V1.").participant("V1").lane == lane
 
 
+def test_a_vehicles_own_road_with_one_lane_each_way_puts_it_in_lane_one() -> None:
+    text = (
+        "The crash occurred where a road with two lanes in each direction crosses a smaller street. V1 was "
+        "traveling north on the street with one lane in each direction. V2 was eastbound. V2 struck V1."
+    )
+    assert _reading(text).participant("V1").lane == 1
+
+
+def test_the_same_lane_is_shared() -> None:
+    text = "V1 was traveling west in lane two. V2 was stopped in the same lane ahead of V1. V1 struck V2 in the rear."
+    assert _reading(text).participant("V2").lane == 2
+
+
 # --- names --------------------------------------------------------------------------------------
 
 
