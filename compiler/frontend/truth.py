@@ -87,7 +87,7 @@ class _Importer:
                 self.errors.append(f"{field}: unknown word {word!r}")
         return tuple(out) if out else UNKNOWN
 
-    def speed_limit(self, value: Any) -> Speed | Unknown:
+    def speed_limit(self, value: Any, report: str | None = None) -> Speed | Unknown:
         if value in (0, "0", None, "unknown"):
             return UNKNOWN
         m = _SPEED.fullmatch(str(value))
@@ -96,6 +96,10 @@ class _Importer:
             return UNKNOWN
         number = float(m.group(1))
         unit = SpeedUnit.MPH if (m.group(2) or "").lower() == "mph" else SpeedUnit.KMH
+        if m.group(2) is None and report is not None and _stated_in_mph_only(m.group(1), report):
+            # a bare number is "in the unit the report states first" (shared/data/README.md)
+            unit = SpeedUnit.MPH
+            self.notes.append(f"speedlimit: bare {m.group(1)} read in mph, the only unit the report states it in")
         return Speed(int(number) if number.is_integer() else number, unit)
 
     def action(self, vid: str, i: int, item: Any) -> Action | None:
@@ -132,6 +136,11 @@ class _Importer:
         )
 
 
+def _stated_in_mph_only(number: str, report: str) -> bool:
+    units = {u.lower() for u in re.findall(r"\b" + re.escape(number) + r"\s*-?\s*(km/?h|kmph|kph|mph)\b", report, re.I)}
+    return units == {"mph"}
+
+
 def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", report: Path | None = None) -> Imported:
     """One ground-truth record as a Scenario, with notes on every repair."""
     imp = _Importer(origin)
@@ -151,9 +160,10 @@ def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", repor
         striker if striker in cars else UNKNOWN,
         others[0] if striker in cars and len(others) == 1 else UNKNOWN,
     )
-    provenance = None
+    provenance, report_text = None, None
     if report is not None and report.is_file():
         provenance = Provenance(str(report), hashlib.sha256(report.read_bytes()).hexdigest(), "truth", UNKNOWN)
+        report_text = report.read_text(encoding="utf-8", errors="replace")
     scenario = Scenario(
         name,
         provenance,
@@ -161,7 +171,11 @@ def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", repor
             imp.words(data.get("weather"), {w.value: w for w in Weather}, "weather"),
             imp.words(data.get("lighting"), _LIGHTING, "lighting"),
         ),
-        Road(kind, lanes if isinstance(lanes, int) and lanes > 0 else UNKNOWN, imp.speed_limit(data.get("speedlimit"))),
+        Road(
+            kind,
+            lanes if isinstance(lanes, int) and lanes > 0 else UNKNOWN,
+            imp.speed_limit(data.get("speedlimit"), report_text),
+        ),
         participants,
         crash,
     )
@@ -171,8 +185,9 @@ def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", repor
 
 
 def import_truth_file(path: Path, reports_root: Path | None = None) -> Imported:
-    """Import `.../truth/<category>/<n>.json`; the scenario is named `<category>_<n>`,
-    and its provenance points at `<reports_root>/<category>/<n>.txt` when that exists."""
+    """Import `.../truth/<category>/<n>.json`; the scenario is named `<category>_<n>`, and its provenance
+    points at `<reports_root>/<category>/<n>.txt` when that exists (by default the `reports` folder beside
+    `truth`, as in shared/data)."""
     from sovarc.dsl import read_source
 
     source = read_source(path, "ground-truth JSON file")
@@ -185,5 +200,6 @@ def import_truth_file(path: Path, reports_root: Path | None = None) -> Imported:
     if not isinstance(data, dict) or "carInformation" not in data:
         raise ParseError(Diagnostic("not a ground-truth record (no carInformation)", Span.whole_file(source.name)))
     category = path.parent.name
-    report = reports_root / category / f"{path.stem}.txt" if reports_root else None
+    reports_root = reports_root or path.resolve().parents[1].parent / "reports"
+    report = reports_root / category / f"{path.stem}.txt"
     return import_truth(data, f"{category}_{path.stem}", source.name, report)

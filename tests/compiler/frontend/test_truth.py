@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
 from sovarc.compiler.frontend.truth import import_truth, import_truth_file
 from sovarc.dsl import ParseError, parse, to_text, verify
+from sovarc.dsl.ir import Speed, SpeedUnit
 
 from tests.compiler.test_cli import sovarc
 from tests.conftest import SHARED
@@ -98,3 +100,16 @@ def test_import_truth_command(tmp_path: Path) -> None:
     failed = sovarc("import-truth", str(bad), "-o", str(tmp_path / "o2"))
     assert failed.returncode == 1 and f"{bad}:1:2: error: invalid JSON" in failed.stderr
     assert not (tmp_path / "o2").exists()
+
+
+def test_a_bare_speed_limit_is_in_the_unit_the_report_states(tmp_path: Path) -> None:
+    (tmp_path / "truth" / "t").mkdir(parents=True)
+    (tmp_path / "reports" / "t").mkdir(parents=True)
+    record = tmp_path / "truth" / "t" / "1.json"
+    record.write_text(json.dumps({**RECORD, "speedlimit": 35}))
+    (tmp_path / "reports" / "t" / "1.txt").write_text("The road had a posted speed of 35 MPH. V1 struck V2.")
+    imported = import_truth_file(record)  # finds the report beside truth/, as in shared/data
+    assert imported.scenario.road.speed_limit == Speed(35, SpeedUnit.MPH)
+    assert "speedlimit: bare 35 read in mph, the only unit the report states it in" in imported.notes
+    (tmp_path / "reports" / "t" / "1.txt").write_text("The speed limit was 56 km/h (35 mph). V1 struck V2.")
+    assert import_truth_file(record).scenario.road.speed_limit == Speed(35, SpeedUnit.KMH)
