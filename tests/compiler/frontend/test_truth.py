@@ -111,5 +111,5 @@ def test_a_bare_speed_limit_is_in_the_unit_the_report_states(tmp_path: Path) -> 
     imported = import_truth_file(record)  # finds the report beside truth/, as in shared/data
     assert imported.scenario.road.speed_limit == Speed(35, SpeedUnit.MPH)
     assert "speedlimit: bare 35 read in mph, the only unit the report states it in" in imported.notes
-    (tmp_path / "reports" / "t" / "1.txt").write_text("The speed limit was 56 km/h (35 mph). V1 struck V2.")
+    (tmp_path / "reports" / "t" / "1.txt").write_text("The speed limit was 35 km/h (22 mph). V1 struck V2.")
     assert import_truth_file(record).scenario.road.speed_limit == Speed(35, SpeedUnit.KMH)
