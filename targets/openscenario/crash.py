@@ -36,6 +36,8 @@ from sovarc.targets.verdict import Finding
 
 AREA_TOL = 0.1  # m beyond C_A's radius
 SCAN_STEP = 0.02  # s
+BISECTIONS = 30  # of a scan step: far below a millimetre of travel
+NEAR_SLACK = 1e-3  # m: points this close to the nearest distance are part of the contact (SUMO's oracle's)
 OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap (players detect the crash)
 
 # Relative heading (degrees, 0..180) allowed per crash type, and the victim faces it names.
@@ -91,7 +93,7 @@ def crash_findings(
     contact, first = _contact(scene, crash, facts)
     touch = crash.time if first is None else first  # the crash is judged where it happens, as SUMO's oracle does
     findings = [_area(scene, crash), contact, _overlap(scene, crash, touch)]
-    findings.extend(_angle_and_faces(scene, crash, touch, facts))
+    findings.extend(_angle_and_faces(scene, crash, _onset(scene, crash, touch), facts))
     findings.extend(_other_contacts(scene, crash))
     return findings, facts
 
@@ -141,6 +143,28 @@ def _overlap(scene: Scene, crash: Crash, touch: float) -> Finding:
     return Finding("overlap", True, f"the bounding boxes overlap from t={hit:.2f} s", hit)
 
 
+def _onset(scene: Scene, crash: Crash, touch: float) -> float:
+    """The instant the boxes begin to overlap, bisected between the last scan step without overlap
+    and the first with it, as SUMO's oracle bisects between its steps: the faces are read at the
+    first instant of contact, where a corner that leads is still a corner (`touch` if they never
+    overlap within OVERLAP_WINDOW)."""
+    a, b = crash.striker, crash.victim
+    window = _times(touch, min(scene.end(a, b), touch + OVERLAP_WINDOW))
+    hi = next((t for t in window if overlap(scene.box(a, t), scene.box(b, t))), None)
+    if hi is None:
+        return touch
+    lo = max(0.0, hi - SCAN_STEP)
+    if overlap(scene.box(a, lo), scene.box(b, lo)):
+        return lo  # overlapping from the start
+    for _ in range(BISECTIONS):
+        mid = (lo + hi) / 2
+        if overlap(scene.box(a, mid), scene.box(b, mid)):
+            hi = mid
+        else:
+            lo = mid
+    return lo
+
+
 def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, object]) -> Iterator[Finding]:
     s_pose, v_pose = scene.pose(crash.striker, touch), scene.pose(crash.victim, touch)
     relative = abs(math.degrees(angle_diff(s_pose.h, v_pose.h)))
@@ -156,7 +180,7 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
         message = f"{relative:.0f}° between the headings at impact; a {crash.type} crash needs {lo:g}° to {hi:g}°"
         yield Finding("impact_angle", False, message, touch)
 
-    point = contact_point(scene.box(crash.striker, touch), scene.box(crash.victim, touch))
+    point = contact_point(scene.box(crash.striker, touch), scene.box(crash.victim, touch), NEAR_SLACK)
     striker, victim = scene.entity(crash.striker), scene.entity(crash.victim)
     s_faces = None if striker.pedestrian else faces_at(striker, s_pose, point)
     v_faces = None if victim.pedestrian else faces_at(victim, v_pose, point)

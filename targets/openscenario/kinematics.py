@@ -162,9 +162,9 @@ def _area_centroid(region: list[Point]) -> tuple[float, Point]:
 CONTACT_AREA = 1e-3  # m²: less overlap than this is a touch, judged by the closest points
 
 
-def contact_point(a: Polygon, b: Polygon) -> Point:
+def contact_point(a: Polygon, b: Polygon, slack: float = 0.02) -> Point:
     """Where two bodies meet: the centre of their overlap, or (when they just touch) the middle of
-    the stretch along which they are closest."""
+    the stretch along which they are closest, within `slack` metres of the least distance."""
     region = list(a)
     for edge in _edges(b):
         region = _clip(region, *edge)
@@ -181,7 +181,7 @@ def contact_point(a: Polygon, b: Polygon) -> Point:
             pairs.append((d, p, q))
     nearest = min(d for d, _, _ in pairs)
     # Faces that lie parallel touch along a stretch: take its middle, not one of its ends.
-    mids = [((p[0] + q[0]) / 2, (p[1] + q[1]) / 2) for d, p, q in pairs if d <= nearest + 0.02]
+    mids = [((p[0] + q[0]) / 2, (p[1] + q[1]) / 2) for d, p, q in pairs if d <= nearest + slack]
     return (sum(m[0] for m in mids) / len(mids), sum(m[1] for m in mids) / len(mids))
 
 
