@@ -178,7 +178,9 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
             found += [
                 (piece.at + m.start(), Action(side))
                 for m in _BARE_TURN.finditer(done)
-                if not re.search(r"\bbefore\b[^,.;]*$", _before(piece) + done[: m.start()], re.I)  # "before it began"
+                if not re.search(
+                    r"\bbefore\s+\w+[^,.;]*$", _before(piece) + done[: m.start()], re.I
+                )  # "before it began"
             ]
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):

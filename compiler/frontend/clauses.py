@@ -26,8 +26,8 @@ _SUBJECT_OF = re.compile(r"\b(?:driver|operator|occupant)s? of (?:the )?$", re.I
 # Other road users: what follows them, up to the next participant, is not a participant's doing.
 _OTHER = re.compile(
     r"\b(?:an?|another|the|other|one|several)\s+(?:(?:non-?contact|uninvolved|other|third|emergency|unknown|"
-    r"unidentified|lead|leading|school|fire|police)\s+)+(?:[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|bus(?:es)?|"
-    r"vans?|pickups?|motorists?|drivers?|motorcycles?|tractor-trailers?|semis?)\b"
+    r"unidentified|lead|leading|school|fire|police)\s+)+(?:[\w-]+\s+){0,2}?(?P<noun>vehicles?|cars?|trucks?|"
+    r"bus(?:es)?|vans?|pickups?|motorists?|drivers?|motorcycles?|tractor-trailers?|semis?)\b"
     r"|\b(?:an?|another)\s+(?:vehicles?|cars?|trucks?|motorists?)\b(?! (?:involved|[VP]\d))"
     r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
     r"|\b(?:vehicles|traffic)\b(?! (?:signal|light|control|device|lane|way|island|count|volume))",
@@ -57,8 +57,8 @@ def is_object(sentence: str, at: int) -> bool:
     return bool(_OBJECT_BEFORE.search(before)) and not _SUBJECT_OF.search(before)
 
 
-def _events(sentence: str, ids: list[str]) -> list[tuple[int, tuple[str, ...]]]:
-    """Where a piece starts in the sentence, and whose it is."""
+def _events(sentence: str, ids: list[str], others: re.Pattern[str] | None) -> list[tuple[int, tuple[str, ...]]]:
+    """Where a piece starts in the sentence, and whose it is; `others` names the road users met before."""
     found: list[tuple[int, tuple[str, ...]]] = []
     for m in _NAME.finditer(sentence):
         if m.group() in ids and (not is_object(sentence, m.start()) or _ASIDE.match(sentence, m.end())):
@@ -69,10 +69,21 @@ def _events(sentence: str, ids: list[str]) -> list[tuple[int, tuple[str, ...]]]:
     groups = [m.span() for m in _BOTH.finditer(sentence)]
     found += [
         (m.start(), ())
-        for m in _OTHER.finditer(sentence)
+        for pattern in (_OTHER, others)
+        if pattern is not None
+        for m in pattern.finditer(sentence)
         if not re.search(r"\b[VP]\d,? ?$", sentence[: m.start()]) and not any(a <= m.start() < b for a, b in groups)
     ]
-    return sorted(found)
+    return sorted(set(found))
+
+
+def _met(sents: list[str]) -> re.Pattern[str] | None:
+    """ "the bus" after "a non-contact school bus": another road user named again by its noun."""
+    nouns = {m.group("noun").lower() for s in sents for m in _OTHER.finditer(s) if m.group("noun")}
+    nouns -= {"vehicle", "vehicles", "traffic", "car", "cars", "driver", "drivers"}  # too general to name one
+    if not nouns:
+        return None
+    return re.compile(r"\b[Tt]he (?:" + "|".join(sorted(map(re.escape, nouns))) + r")\b")
 
 
 def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
@@ -80,8 +91,9 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
     out: list[Piece] = []
     carry: tuple[str, ...] = ()
     offset = 0
+    others = _met(sents)
     for index, sentence in enumerate(sents):
-        events = _events(sentence, ids)
+        events = _events(sentence, ids, others)
         who, start = carry, 0
         for at, whom in list(events):
             if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here

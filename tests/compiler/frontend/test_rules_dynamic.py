@@ -51,6 +51,20 @@ def test_another_road_users_doings_are_nobodys() -> None:
     assert _actions(text)["V1"] == ["follow_lane", "stop"]
 
 
+def test_another_road_user_named_again_by_its_noun_is_still_nobody() -> None:
+    text = (
+        "V1, a 2003 Buick, was northbound and stopped at the sign. A non-contact delivery van was turning right. "
+        "The view of V1 was blocked by the van making the turn. V1 began to turn left. V2 struck V1."
+    )
+    assert _actions(text)["V1"] == ["follow_lane", "stop", "turn_left"]
+
+
+def test_a_turn_after_before_is_done_unless_before_names_who() -> None:
+    meant = "V1 was westbound intending to turn left. "
+    assert _actions(meant + "The driver did not see V2 before turning. V2 struck V1.")["V1"][-1] == "turn_left"
+    assert _actions(meant + "Before V1 began the turn, V2 struck V1.")["V1"] == ["follow_lane"]
+
+
 def test_a_clause_about_traffic_ends_at_then() -> None:
     text = "At the intersection V1 was traveling east, stopped for traffic, then turned left. V2 hit V1."
     assert _actions(text)["V1"] == ["follow_lane", "stop", "turn_left"]
