@@ -151,37 +151,43 @@ def what_was_done(text: str) -> str:
     """The text without what a driver only intended or did to avoid the crash."""
 
     def intent(m: re.Match[str]) -> str:
-        keep = m.group("lead").lower() == "intending" or m.group("lead").lower().startswith("intend")
-        return m.group(0) if keep and _STRAIGHT_ON.match(m.group("what")) else m.group("lead")
+        keep = m.group("lead").lower().startswith("intend") and _STRAIGHT_ON.match(m.group("what"))
+        return m.group(0) if keep else m.group("lead")
 
     text = _EVASIVE.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
     return _INTENT.sub(intent, text)
 
 
-def _before(piece: Piece) -> str:
-    """The sentence up to the piece."""
-    return piece.context[: max(0, piece.context.find(piece.text))]
+def _meant_turn(pieces: list[Piece]) -> ActionKind | None:
+    """The one turn the driver meant to make ("intending to turn left"), if the report names one."""
+    sides = {m.group(1).lower() for p in pieces for i in _INTENT.finditer(p.text) for m in _MEANT_TURN.finditer(i[0])}
+    if len(sides) != 1:
+        return None
+    return ActionKind.TURN_LEFT if sides == {"left"} else ActionKind.TURN_RIGHT
+
+
+def _bare_turns(piece: Piece, done: str, side: ActionKind) -> list[tuple[int, Action]]:
+    """ "began the turn", "before turning": the meant turn, done; not after "Before V1 ..." (not yet done)."""
+    before = piece.context[: max(0, piece.context.find(piece.text))]
+    return [
+        (piece.at + m.start(), Action(side))
+        for m in _BARE_TURN.finditer(done)
+        if not re.search(r"\bbefore\s+\w+[^,.;]*$", before + done[: m.start()], re.I)
+    ]
 
 
 def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown) -> list[tuple[int, Action]]:
     at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
     near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
-    meant = [m.group(1).lower() for p in pieces for i in _INTENT.finditer(p.text) for m in _MEANT_TURN.finditer(i[0])]
+    meant = _meant_turn(pieces)
     found: list[tuple[int, Action]] = []
     for piece in pieces:
         done = what_was_done(piece.text)
         if near:
             found += [(piece.at + m.start(), Action(ActionKind.GO_ACROSS)) for m in _STRAIGHT.finditer(done)]
-        if len(set(meant)) == 1:
-            side = ActionKind.TURN_LEFT if meant[0] == "left" else ActionKind.TURN_RIGHT
-            found += [
-                (piece.at + m.start(), Action(side))
-                for m in _BARE_TURN.finditer(done)
-                if not re.search(
-                    r"\bbefore\s+\w+[^,.;]*$", _before(piece) + done[: m.start()], re.I
-                )  # "before it began"
-            ]
+        if meant is not None:
+            found += _bare_turns(piece, done, meant)
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
                 to: Side | None = None
@@ -203,9 +209,8 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                 for m in _INTO_LANES.finditer(what_was_done(piece.text))
                 if (m.group(1) or m.group(2)).lower() == _OPPOSITE[heading.value]
             ]
-    if len(set(meant)) == 1:  # one meant to turn and drove into the junction: that is its turn
-        side = ActionKind.TURN_LEFT if meant[0] == "left" else ActionKind.TURN_RIGHT
-        found = [(at, Action(side) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
+    if meant is not None:  # one meant to turn and drove into the junction: that is its turn
+        found = [(at, Action(meant) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
     return found
 
 
