@@ -181,16 +181,17 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
         yield Finding("impact_angle", False, message, touch)
 
     point = contact_point(scene.box(crash.striker, touch), scene.box(crash.victim, touch), NEAR_SLACK)
-    striker, victim = scene.entity(crash.striker), scene.entity(crash.victim)
-    s_faces = None if striker.pedestrian else faces_at(striker, s_pose, point)
-    v_faces = None if victim.pedestrian else faces_at(victim, v_pose, point)
-    facts["striker_face"] = None if s_faces is None else "-".join(s_faces)
-    facts["victim_face"] = None if v_faces is None else "-".join(v_faces)
+    # A pedestrian's faces count too (front = the way it walks), as in SUMO's oracle: a walker
+    # struck from behind is a rear_end, one crossing the road is hit on a side.
+    s_faces = faces_at(scene.entity(crash.striker), s_pose, point)
+    v_faces = faces_at(scene.entity(crash.victim), v_pose, point)
+    facts["striker_face"] = "-".join(s_faces)
+    facts["victim_face"] = "-".join(v_faces)
     problems = []
-    if s_faces is not None and "front" not in s_faces:
+    if "front" not in s_faces:
         problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its front")
     wanted = VICTIM_FACES[crash.type]
-    if v_faces is not None and not wanted.intersection(v_faces):
+    if not wanted.intersection(v_faces):
         problems.append(
             f"the victim {crash.victim} is hit on its {_words(v_faces)}, not its {' or '.join(sorted(wanted))}"
         )
@@ -201,9 +202,7 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
         yield Finding("impact_faces", True, f"{faces}, as a {crash.type} crash", touch)
 
 
-def _words(faces: tuple[str, ...] | None) -> str:
-    if faces is None:
-        return "body"
+def _words(faces: tuple[str, ...]) -> str:
     return f"{faces[0]}-{faces[1]} corner" if len(faces) == 2 else faces[0]
 
 
