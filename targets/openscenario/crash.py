@@ -1,7 +1,7 @@
 """Crash findings: the encoded trajectories reach the collision area C_A together at the declared
 impact time, the striker and the victim are both still in C_A when they first touch, their boxes
-then overlap, at the first touch the angle and the faces are those the crash type names, and no
-other pair of bodies collides before it.
+then overlap, where they begin to overlap the angle and the faces are those the crash type
+names, and no other pair of bodies collides before it.
 
 The first touch is judged by where the bodies are, with the same test of "in C_A" as at the
 impact time, not by a time window: C_A's radius is the plan's own tolerance for where the crash
