@@ -23,6 +23,7 @@ from sovarc.compiler.cli_backend import (
     run_targets,
     target_names,
 )
+from sovarc.compiler.cli_eval_tests import add_tests_parser, cmd_eval_tests
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import STAGE_NAMES, Options, entry_stage, run_pipeline
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
@@ -71,7 +72,7 @@ COMMANDS: dict[str, str] = {
     "schema": "print the JSON Schema of the scenario IR's JSON form",
     "import-truth": "convert SoVAR-style ground-truth JSON into .sov scenarios",
     "extract": "read crash reports into .sov scenarios (the front end alone)",
-    "eval": "measure the compiler against ground truth (extraction, srr)",
+    "eval": "measure the compiler against ground truth (extraction, srr, tests)",
     "lower": "stage a scenario on a map's sites and write the timed plan",
 }
 
@@ -263,6 +264,7 @@ def _build_parser() -> argparse.ArgumentParser:
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     _add_llm(exv)
     add_srr_parser(which, _formatter)
+    add_tests_parser(which, _formatter)
     return parser
 
 
@@ -531,6 +533,8 @@ def _cmd_extract(args: argparse.Namespace) -> int:
 def _cmd_eval(args: argparse.Namespace) -> int:
     if args.evaluation == "srr":
         return cmd_eval_srr(args)
+    if args.evaluation == "tests":
+        return cmd_eval_tests(args)
     from sovarc.compiler.evaluation.extraction import Report
     from sovarc.compiler.frontend.truth import import_truth_file
     from sovarc.compiler.progress import progress

@@ -2,12 +2,14 @@
 
 For each plan (one scenario on one site), every vehicle takes its turn as the ego twice: among the
 participants replaying the report's crash, and among random NPCs on the same site. The table is in
-the form of the paper's Table 6: failed tests per road kind, report-derived versus random; the
-closing note classifies the failures in the spirit of the paper's violation types.
+the form of the paper's Table 6: failed tests per road kind, report-derived versus random; then the
+failures by check and by violation (violations.py, the spirit of the paper's violation types). A
+scenario-site that could not be planned is counted as such, with its reason.
 """
 
 from __future__ import annotations
 
+import statistics
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -17,83 +19,164 @@ from typing import Any
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.ir import RoadKind
 from sovarc.targets.fmu.interface import EgoFmu, validate_fmu
-from sovarc.targets.fmu.oracle import FAILURE_CLASSES
+from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
 from sovarc.targets.fmu.reference import reference_fmu
-from sovarc.targets.fmu.runner import Method, run_tests
+from sovarc.targets.fmu.runner import Method, run_test_results
 from sovarc.targets.verdict import Verdict
 
 METHODS: tuple[Method, ...] = ("report", "random")
-KINDS = (RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT)
+KINDS: tuple[str, ...] = tuple(k.value for k in RoadKind)
+WHAT_THE_EGO_DID = "what the ego did wrong (the paper's violation types)"
 
 
 @dataclass
 class Tally:
     tests: int = 0
     failed: int = 0
-    classes: Counter[str] = field(default_factory=Counter)
+    classes: Counter[str] = field(default_factory=Counter)  # FAILURE_CLASSES key -> tests
+    violations: Counter[str] = field(default_factory=Counter)  # VIOLATIONS key -> tests
 
     def add(self, verdict: Verdict) -> None:
         self.tests += 1
         if not verdict.passed:
             self.failed += 1
             self.classes[str(verdict.facts.get("failure"))] += 1
+            self.violations[str(verdict.facts.get("violation"))] += 1
+
+    def merge(self, other: Tally) -> None:
+        self.tests += other.tests
+        self.failed += other.failed
+        self.classes.update(other.classes)
+        self.violations.update(other.violations)
+
+
+@dataclass(frozen=True)
+class Unplanned:
+    """A scenario-site that could not be planned, so has no tests."""
+
+    scenario: str
+    kind: str
+    site: str  # '-' when no site of the kind could be chosen
+    why: str  # a short class: 'no fitting site', 'unsat', 'synthesis', ...
+    reason: str  # the error's first message
 
 
 @dataclass
 class TestsTable:
-    """Tallies per (road kind, method), and every verdict."""
+    """Tallies per (road kind, method), every verdict, the scenario-sites that could not be planned,
+    and the wall time of each test."""
 
-    tallies: dict[tuple[RoadKind, Method], Tally] = field(default_factory=dict)
+    tallies: dict[tuple[str, Method], Tally] = field(default_factory=dict)
     verdicts: list[Verdict] = field(default_factory=list)
-    scenarios: Counter[RoadKind] = field(default_factory=Counter)
+    planned: Counter[str] = field(default_factory=Counter)  # road kind -> planned scenario-sites
+    unplanned: list[Unplanned] = field(default_factory=list)
+    walls: list[float] = field(default_factory=list)  # s per test
+    simulated: list[float] = field(default_factory=list)  # s of simulated time per test
 
     __test__ = False  # not a pytest class
 
-    def add(self, kind: RoadKind, method: Method, verdict: Verdict) -> None:
-        self.tallies.setdefault((kind, method), Tally()).add(verdict)
+    def add(self, kind: str, method: Method, verdict: Verdict) -> None:
+        self.tallies.setdefault((str(kind), method), Tally()).add(verdict)
         self.verdicts.append(verdict)
 
-    def tally(self, kind: RoadKind | None, method: Method) -> Tally:
+    def add_plan(self, plan: Plan, ego: EgoFmu, seed: int = 0, *, baseline: bool = True) -> None:
+        """Run the plan's report-derived tests and (with baseline) its random ones."""
+        self.planned[plan.kind.value] += 1
+        for method in METHODS if baseline else METHODS[:1]:
+            for result in run_test_results(plan, ego, seed, method=method):
+                self.add(plan.kind.value, method, result.verdict)
+                self.walls.append(result.run.wall)
+                self.simulated.append(float(result.run.times[-1]))
+
+    def add_unplanned(self, scenario: str, kind: str, site: str, why: str, reason: str) -> None:
+        self.unplanned.append(Unplanned(scenario, str(kind), site, why, reason))
+
+    def kinds(self) -> list[str]:
+        """The road kinds of the table: the paper's three, then any other met (an unknown kind)."""
+        seen = set(self.planned) | {u.kind for u in self.unplanned} | {k for k, _ in self.tallies}
+        return [*KINDS, *sorted(seen - set(KINDS))]
+
+    def tally(self, kind: str | None, method: Method) -> Tally:
         if kind is not None:
             return self.tallies.get((kind, method), Tally())
         total = Tally()
         for (_, m), t in self.tallies.items():
             if m == method:
-                total.tests += t.tests
-                total.failed += t.failed
-                total.classes.update(t.classes)
+                total.merge(t)
         return total
 
-    def render(self) -> str:
-        """The table, then the failure classes."""
+    def ratio(self) -> float | None:
+        """Report-derived failures per random failure (None when random found none)."""
+        report, random = self.tally(None, "report").failed, self.tally(None, "random").failed
+        return report / random if random else None
+
+    def render(self, title: str = "Ego failures found by the tests") -> str:
+        """The Table 6 form, then failures by check and by violation, what could not be planned, and timing."""
         lines = [
-            "Ego failures found by the tests (the paper's Table 6 form)",
+            f"{title} (the paper's Table 6 form)",
             "",
-            f"{'road kind':<14}{'plans':>7}{'tests':>7}{'report-derived':>16}{'random':>8}",
+            f"{'road kind':<14}{'sites':>7}{'planned':>9}{'tests':>7}{'report-derived':>16}{'random':>8}",
         ]
-        for kind in [*KINDS, None]:
+        unplanned = Counter(u.kind for u in self.unplanned)
+        for kind in [*self.kinds(), None]:
             report, random = self.tally(kind, "report"), self.tally(kind, "random")
-            plans = self.scenarios[kind] if kind else sum(self.scenarios.values())
-            name = kind.value if kind else "total"
-            lines.append(f"{name:<14}{plans:>7}{report.tests:>7}{report.failed:>16}{random.failed:>8}")
+            planned = self.planned[kind] if kind else sum(self.planned.values())
+            sites = planned + (unplanned[kind] if kind else len(self.unplanned))
+            name = kind or "total"
+            rand = str(random.failed) if random.tests or not report.tests else "-"
+            lines.append(f"{name:<14}{sites:>7}{planned:>9}{report.tests:>7}{report.failed:>16}{rand:>8}")
         report, random = self.tally(None, "report"), self.tally(None, "random")
-        ratio = f"{report.failed / random.failed:.1f}x" if random.failed else ("n/a" if not report.failed else "inf")
-        lines += ["", f"report-derived / random failures: {ratio}", "", "failures by class (report-derived, random):"]
-        for key, text in FAILURE_CLASSES.items():
-            a, b = report.classes[key], random.classes[key]
-            if a or b:
-                lines.append(f"  {text:<60}{a:>5}{b:>8}")
+        ratio = self.ratio()
+        if random.tests:
+            shown = f"{ratio:.1f}x" if ratio is not None else ("n/a" if not report.failed else "no random failures")
+            lines += ["", f"report-derived / random failures: {shown}"]
+        lines += ["", f"{'failures by check':<62}{'report':>8}{'random':>8}"]
+        lines += self._rows(FAILURE_CLASSES, report.classes, random.classes)
+        lines += ["", f"{WHAT_THE_EGO_DID:<62}{'report':>8}{'random':>8}"]
+        lines += self._rows(VIOLATIONS, report.violations, random.violations)
+        if self.unplanned:
+            reasons = Counter(u.why for u in self.unplanned)
+            listed = ", ".join(f"{why} {n}" for why, n in reasons.most_common())
+            lines += ["", f"not planned: {len(self.unplanned)} scenario-site(s), no tests ({listed})"]
+        if self.walls:
+            lines += ["", self.timing()]
         return "\n".join(lines) + "\n"
 
+    def timing(self) -> str:
+        walls = sorted(self.walls)
+        p90 = walls[min(int(0.9 * len(walls)), len(walls) - 1)]
+        per20 = statistics.median(w * 20.0 / max(s, 1.0) for w, s in zip(self.walls, self.simulated, strict=True))
+        return (
+            f"wall time per test: median {statistics.median(walls):.2f} s, p90 {p90:.2f} s, max {walls[-1]:.2f} s; "
+            f"per 20 s simulated: median {per20:.2f} s ({len(walls)} tests)"
+        )
+
+    @staticmethod
+    def _rows(names: dict[str, str], report: Counter[str], random: Counter[str]) -> list[str]:
+        rows = [
+            f"  {text:<60}{report[key]:>8}{random[key]:>8}" for key, text in names.items() if report[key] or random[key]
+        ]
+        return rows or ["  (none)"]
+
     def to_json(self) -> dict[str, Any]:
+        """Figures for tools (no wall times: the same run gives the same JSON)."""
         rows = {}
-        for kind in KINDS:
-            rows[kind.value] = {
-                "plans": self.scenarios[kind],
+        for kind in self.kinds():
+            rows[kind] = {
+                "planned": self.planned[kind],
+                "unplanned": sum(1 for u in self.unplanned if u.kind == kind),
                 **{m: {"tests": self.tally(kind, m).tests, "failed": self.tally(kind, m).failed} for m in METHODS},
             }
-        classes = {m: dict(sorted(self.tally(None, m).classes.items())) for m in METHODS}
-        return {"rows": rows, "classes": classes, "verdicts": [v.to_json() for v in self.verdicts]}
+        total = {m: self.tally(None, m) for m in METHODS}
+        return {
+            "rows": rows,
+            "total": {m: {"tests": t.tests, "failed": t.failed} for m, t in total.items()},
+            "ratio": None if self.ratio() is None else round(self.ratio() or 0.0, 3),
+            "classes": {m: dict(sorted(t.classes.items())) for m, t in total.items()},
+            "violations": {m: dict(sorted(t.violations.items())) for m, t in total.items()},
+            "unplanned": [u.__dict__ for u in self.unplanned],
+            "verdicts": [v.to_json() for v in self.verdicts],
+        }
 
 
 def evaluate_tests(
@@ -103,8 +186,5 @@ def evaluate_tests(
     ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
     table = TestsTable()
     for plan in plans:
-        table.scenarios[plan.kind] += 1
-        for method in METHODS if baseline else METHODS[:1]:
-            for verdict in run_tests(plan, ego, seed, method=method):
-                table.add(plan.kind, method, verdict)
+        table.add_plan(plan, ego, seed, baseline=baseline)
     return table

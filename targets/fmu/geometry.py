@@ -11,7 +11,8 @@ import math
 import numpy as np
 from sovarc.compiler.plan import Body
 
-TTC_HORIZON = 10.0  # s: beyond this, no collision is imminent
+TTC_HORIZON = 5.0  # s: beyond this, no collision is imminent
+TICK = 0.1  # s between predicted poses
 
 
 def centre(x: float, y: float, heading: float, body: Body) -> tuple[float, float]:
@@ -56,38 +57,32 @@ def _discs(cx: np.ndarray, cy: np.ndarray, heading: np.ndarray, body: Body) -> t
     return cx[..., None] + offsets * np.sin(rad)[..., None], cy[..., None] + offsets * np.cos(rad)[..., None], radius
 
 
-def time_to_collision(
-    a: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
-    body_a: Body,
-    b: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
-    body_b: Body,
-) -> np.ndarray:
-    """Per step, the time until bodies a and b touch if both keep their velocity (inf: not within TTC_HORIZON).
+Future = tuple[np.ndarray, np.ndarray, np.ndarray]  # x, y, heading of a reference point: (steps, ticks)
 
-    Each of a, b is (x, y, heading, speed) arrays of the reference point, one entry per step.
-    """
-    ax, ay, ah, av = a
-    bx, by, bh, bv = b
-    acx, acy = _centres(ax, ay, ah, body_a)
-    bcx, bcy = _centres(bx, by, bh, body_b)
-    pax, pay, ra = _discs(acx, acy, ah, body_a)
-    pbx, pby, rb = _discs(bcx, bcy, bh, body_b)
-    # relative position of every disc pair (steps, 3, 3) and relative velocity (steps, 1, 1)
-    px = pax[:, :, None] - pbx[:, None, :]
-    py = pay[:, :, None] - pby[:, None, :]
-    vx = (av * np.sin(np.radians(ah)) - bv * np.sin(np.radians(bh)))[:, None, None]
-    vy = (av * np.cos(np.radians(ah)) - bv * np.cos(np.radians(bh)))[:, None, None]
-    reach = ra + rb
-    qa = vx * vx + vy * vy
-    qb = 2.0 * (px * vx + py * vy)
-    qc = px * px + py * py - reach * reach
-    disc = qb * qb - 4.0 * qa * qc
-    with np.errstate(divide="ignore", invalid="ignore"):
-        first = (-qb - np.sqrt(np.maximum(disc, 0.0))) / (2.0 * qa)
-    ttc = np.where((disc >= 0.0) & (qa > 1e-9) & (first >= 0.0), first, np.inf)
-    ttc = np.where(qc <= 0.0, 0.0, ttc)  # already touching
-    ttc = ttc.min(axis=(1, 2))
-    return np.where(ttc <= TTC_HORIZON, ttc, np.inf)
+
+def ticks() -> np.ndarray:
+    """The times ahead at which bodies are predicted: 0, TICK, ... TTC_HORIZON."""
+    return np.arange(0.0, TTC_HORIZON + TICK / 2.0, TICK)
+
+
+def straight_on(x: np.ndarray, y: np.ndarray, heading: np.ndarray, speed: np.ndarray) -> Future:
+    """Per step, where a body will be at each tick if it keeps its velocity."""
+    ahead = speed[:, None] * ticks()[None, :]
+    rad = np.radians(heading)[:, None]
+    shape = ahead.shape
+    return x[:, None] + ahead * np.sin(rad), y[:, None] + ahead * np.cos(rad), np.broadcast_to(heading[:, None], shape)
+
+
+def time_to_collision(a: Future, body_a: Body, b: Future, body_b: Body) -> np.ndarray:
+    """Per step, the first tick at which bodies a and b, moving as predicted, touch (inf: not within
+    TTC_HORIZON). Each body is covered by three discs, so bodies "touch" a little before their boxes do."""
+    pax, pay, ra = _discs(*_centres(a[0], a[1], a[2], body_a), a[2], body_a)
+    pbx, pby, rb = _discs(*_centres(b[0], b[1], b[2], body_b), b[2], body_b)
+    dx = pax[..., :, None] - pbx[..., None, :]
+    dy = pay[..., :, None] - pby[..., None, :]
+    touching = ((dx * dx + dy * dy) < (ra + rb) ** 2).any(axis=(2, 3))  # (steps, ticks)
+    first = np.argmax(touching, axis=1)
+    return np.where(touching.any(axis=1), ticks()[first], np.inf)
 
 
 def _centres(x: np.ndarray, y: np.ndarray, heading: np.ndarray, body: Body) -> tuple[np.ndarray, np.ndarray]:

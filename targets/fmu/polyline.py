@@ -52,6 +52,11 @@ class Polyline:
         u = s - self.s[k]
         return self.xy[k] + u[:, None] * self.dir[k]
 
+    def headings_at(self, s: np.ndarray) -> np.ndarray:
+        """Compass headings at arc lengths s (any shape)."""
+        k = np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, len(self.seg_len) - 1)
+        return np.degrees(np.arctan2(self.dir[k, 0], self.dir[k, 1])) % 360.0
+
     def heading_at(self, s: float) -> float:
         k = self._index(s)
         return compass(float(self.dir[k, 0]), float(self.dir[k, 1]))

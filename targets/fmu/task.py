@@ -1,7 +1,7 @@
 """One ego task: a participant's start, its route and goal, and the speeds its route asks for.
 
 The ego starts at its trajectory's first sample, at that sample's speed. Its route is the path its
-trajectory drives, then on along the lane its last edge leads into (straight on without one). The
+trajectory drives, then on along the lane of its last edge that runs its way (else straight on). The
 goal is `GOAL_MARGIN` past the end of the planned path. The speed the route asks for at arc length s
 is the fastest the participant drove there (a participant that waited does not make the ego wait),
 and never below `MIN_CRUISE`, so that every ego has somewhere to go.
@@ -27,8 +27,11 @@ MIN_CRUISE = 3.0  # m/s: the slowest speed a route asks for
 HOLD_PATH = 1.0  # m: a participant whose path is shorter holds its position
 HOLD_RADIUS = 2.0  # m a holding ego may creep
 BUDGET_SLACK = 8.0  # s the ego may take beyond the plan's own time to reach the goal
-MAX_BUDGET = 60.0  # s: no test runs longer
+MAX_BUDGET = 120.0  # s: no test runs longer (the longest plans of the 90 reports last about 60 s)
 BIN = 1.0  # m: resolution of the speed profile
+JOIN_REACH = 5.0  # m: the route goes on along a lane of its last edge only this near the path's end
+JOIN_TURN = 60.0  # deg: ... and only one that runs within this of the path's final heading
+JOIN_AHEAD = 4.0  # m along that lane from the path's end to where the route joins it
 
 LaneShapes = Callable[[str], Sequence[tuple[str, Sequence[Point]]]]  # edge id -> (lane id, centre line) per lane
 
@@ -116,11 +119,17 @@ def _speed_profile(samples: Sequence[Sample], path_end: float) -> tuple[np.ndarr
 
 
 def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneShapes) -> list[Point]:
-    """The centre line of the lane of the last edge the trajectory drives, from where its path ends."""
+    """The centre line of the lane of the last edge the trajectory drives, from where its path ends.
+
+    Only a lane near the path's end that runs the way the path was heading counts: a wrong-way driver's
+    lane runs against it, and a turn off the road (into a driveway) ends across the lanes, and following
+    either would turn the route back on itself and put the goal out of reach. Those go straight on.
+    """
     edges = [e for e in trajectory.edges if not e.startswith(":")]
     if not edges:
         return []
     end = planned.point_at(planned.length)
+    heading = planned.heading_at(planned.length)
     lanes = list(lane_shapes(edges[-1]))
     allowed = [(lane, shape) for lane, shape in lanes if lane in trajectory.lanes] or lanes
     best: tuple[float, Polyline, float] | None = None
@@ -129,10 +138,12 @@ def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneSh
             continue
         line = Polyline(shape)
         s, dist = line.project(end, 0.0, line.length)
-        if best is None or dist < best[0]:
+        turn = abs((line.heading_at(s) - heading + 180.0) % 360.0 - 180.0)
+        if dist <= JOIN_REACH and turn <= JOIN_TURN and (best is None or dist < best[0]):
             best = (dist, line, s)
     if best is None:
         return []
     _, line, s = best
-    later = [tuple(p) for p, at in zip(line.xy, line.s, strict=True) if at > s + 1.0]
-    return [line.point_at(s + 1.0), *later] if later or s + 1.0 < line.length else []
+    join = s + JOIN_AHEAD  # a little ahead, so that a path ending mid-turn bends onto the lane
+    later = [tuple(p) for p, at in zip(line.xy, line.s, strict=True) if at > join]
+    return [line.point_at(join), *later] if later or join < line.length else []

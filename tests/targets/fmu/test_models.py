@@ -3,16 +3,18 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
+import sumolib
 from sovarc.compiler.plan import CAR, PEDESTRIAN
 from sovarc.targets.fmu.bicycle import MAX_BRAKE, Geometry, State, advance
-from sovarc.targets.fmu.geometry import corners, overlap, time_to_collision
+from sovarc.targets.fmu.geometry import TICK, corners, overlap, straight_on, time_to_collision
 from sovarc.targets.fmu.polyline import Polyline
 from sovarc.targets.fmu.task import GOAL_MARGIN, MIN_CRUISE, make_task, to_ego_frame
 
-from tests.targets.fmu.plans import car_following
+from tests.targets.fmu.plans import TOWN, car_following, eastbound
 
 CAR_GEOMETRY = Geometry.of(CAR)
 
@@ -42,14 +44,16 @@ def test_boxes_overlap_and_the_front_bumper_is_the_reference_point() -> None:
 
 
 def test_time_to_collision_head_on_and_apart() -> None:
-    def one(*values: float) -> tuple[np.ndarray, ...]:
-        return tuple(np.array([v]) for v in values)
+    def ahead(*values: float) -> tuple[np.ndarray, ...]:
+        return straight_on(*(np.array([v]) for v in values))
 
     # fronts 20 m apart, closing at 20 m/s; the three-disc cover touches a little before the boxes do
-    ttc = time_to_collision(one(0.0, 0.0, 90.0, 10.0), CAR, one(20.0, 0.0, 270.0, 10.0), CAR)
-    assert 0.8 < float(ttc[0]) <= 1.0
-    apart = time_to_collision(one(0.0, 0.0, 90.0, 10.0), CAR, one(0.0, 3.5, 90.0, 10.0), CAR)
+    ttc = time_to_collision(ahead(0.0, 0.0, 90.0, 10.0), CAR, ahead(20.0, 0.0, 270.0, 10.0), CAR)
+    assert 0.8 - TICK < float(ttc[0]) <= 1.0
+    apart = time_to_collision(ahead(0.0, 0.0, 90.0, 10.0), CAR, ahead(0.0, 3.5, 90.0, 10.0), CAR)
     assert math.isinf(float(apart[0]))  # the next lane over, same speed
+    touching = time_to_collision(ahead(0.0, 0.0, 90.0, 0.0), CAR, ahead(4.0, 0.0, 90.0, 0.0), CAR)
+    assert float(touching[0]) == 0.0
 
 
 def test_polyline_projection_and_extension() -> None:
@@ -74,3 +78,22 @@ def test_an_ego_task_follows_the_planned_path_and_speeds() -> None:
     ahead = task.path_points(0.0, task.start.x, task.start.y, task.start.heading)
     assert ahead[0] == pytest.approx((4.0, 0.0)) and ahead[-1] == pytest.approx((48.0, 0.0))
     assert task.budget > plan.duration
+
+
+def test_a_wrong_way_route_goes_on_straight_and_its_goal_stays_ahead() -> None:
+    """A driver on the wrong side of the road ends on the other direction's edge: following that
+    edge's lanes would turn the route back on itself and put the goal out of reach."""
+    net = sumolib.net.readNet(str(TOWN))
+    lanes = lambda edge: [(lane.getID(), lane.getShape()) for lane in net.getEdge(edge).getLanes()]  # noqa: E731
+    plan = car_following()
+    v1 = plan.trajectory("V1")
+    on_wrong_side = eastbound("V1", 20.0, 1, lambda t: 14.0, 10.0, lateral=lambda t: 9.9)  # in -ave2_3, east
+    wrong_way = replace(on_wrong_side, edges=("ave2", "-ave2"), lanes=("ave2_1", "-ave2_3"))
+    assert wrong_way.samples[-1].y == pytest.approx(1.65) and v1.samples[-1].y == pytest.approx(-8.25)
+    plan = replace(plan, trajectories=(wrong_way, plan.trajectory("V2")))
+    task = make_task(plan, "V1", lanes)
+    end = task.route.point_at(task.path_end)
+    assert task.route.heading_at(task.path_end + 1.0) == pytest.approx(90.0, abs=1.0)
+    assert task.route.point_at(task.goal) == pytest.approx((end[0] + GOAL_MARGIN, 1.65), abs=0.1)
+    right_way = make_task(car_following(), "V1", lanes)  # its own lane goes on east
+    assert right_way.route.point_at(right_way.goal)[1] == pytest.approx(-8.25, abs=0.1)

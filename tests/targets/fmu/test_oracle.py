@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from sovarc.compiler.plan import CAR
 from sovarc.targets.fmu.harness import Contact, Run, Track
-from sovarc.targets.fmu.oracle import judge
+from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS, judge
 from sovarc.targets.fmu.task import make_task
 
 from tests.targets.fmu.plans import car_following
@@ -14,8 +14,9 @@ from tests.targets.fmu.plans import car_following
 STEPS = 41  # 2 s at 0.05 s
 
 
-def _run(ego_speed: np.ndarray, other_x: np.ndarray, *, contact: bool) -> Run:
-    """V1 (the ego) sits with its front bumper at x = 50 (moving as ego_speed says); V2 comes from behind."""
+def _run(ego_speed: np.ndarray, other_x: np.ndarray, *, contact: bool, other_speed: float = 10.0) -> Run:
+    """V1 (the ego) starts with its front bumper at x = 50 and moves as ego_speed says; V2, in the same
+    lane, is where other_x says, driving east at other_speed."""
     plan = car_following()
     times = np.arange(STEPS) * 0.05
     ego_x = 50.0 + np.concatenate(([0.0], np.cumsum(ego_speed[:-1] * 0.05)))
@@ -23,7 +24,7 @@ def _run(ego_speed: np.ndarray, other_x: np.ndarray, *, contact: bool) -> Run:
     east = np.full(STEPS, 90.0)
     tracks = {
         "V1": Track("V1", CAR, ego_x, lane, east, ego_speed),
-        "V2": Track("V2", CAR, other_x, lane, east, np.full(STEPS, 10.0)),
+        "V2": Track("V2", CAR, other_x, lane, east, np.full(STEPS, other_speed)),
     }
     return Run(
         "V1",
@@ -50,18 +51,43 @@ def test_an_ego_hit_while_standing_still_has_not_failed() -> None:
     assert [f.check for f in verdict.findings] == ["collision", "min_ttc", "harsh_braking"]  # goal not judged
 
 
-def test_a_moving_ego_struck_from_behind_has_failed() -> None:
+def test_a_moving_ego_run_into_from_behind_has_not_failed() -> None:
+    """The NPCs replay and never react: one driving into the back of a slower ego is its own doing."""
     run = _run(np.full(STEPS, 2.0), 30.0 + 12.0 * np.arange(STEPS) * 0.05, contact=True)
     verdict = judge(run, car_following())
-    assert not verdict.findings[0].passed
-    assert verdict.facts["failure"] == "struck_from_behind"
+    assert verdict.passed, verdict.dumps()
+    assert "ran into the back of the ego" in verdict.findings[0].message
+    assert verdict.facts["collision"]["kind"] == "struck_from_behind"
+    assert verdict.facts["min_ttc"] is not None and verdict.facts["min_ttc"] < 1.0  # close, but coming at the ego
+    assert verdict.facts["min_own_ttc"] is None and verdict.facts["failure"] is None
 
 
-def test_harsh_braking_and_a_short_goal_are_failures() -> None:
+def test_running_up_on_a_standing_car_is_a_near_miss_of_its_own_making() -> None:
+    """The ego comes at 10 m/s, brakes at 8 m/s² and stops 0.75 m behind a standing car."""
+    speed = np.concatenate((np.full(8, 10.0), np.maximum(10.0 - 8.0 * 0.05 * np.arange(1, 34), 0.0)))
+    ego_x = 50.0 + np.concatenate(([0.0], np.cumsum(speed[:-1] * 0.05)))
+    standing = np.full(STEPS, ego_x[-1] + CAR.length + 0.75)  # its front bumper
+    run = _run(speed, standing, contact=False, other_speed=0.0)
+    verdict = judge(run, car_following())
+    by_check = {f.check: f for f in verdict.findings}
+    assert not by_check["min_ttc"].passed and "of its own making" in by_check["min_ttc"].message
+    assert not by_check["harsh_braking"].passed and "for V2" in by_check["harsh_braking"].message
+    assert by_check["goal"].passed and "held up by V2" in by_check["goal"].message  # it has no way past
+    assert verdict.facts["blocked_by"] == "V2"
+    assert verdict.facts["failure"] == "near_miss" and verdict.facts["violation"] == "rear_end"
+
+
+def test_harsh_braking_for_no_one_and_stalling_with_the_route_clear_are_failures() -> None:
     speed = np.concatenate((np.full(20, 10.0), np.linspace(10.0, 0.0, 7), np.zeros(STEPS - 27)))
     verdict = judge(_run(speed, np.full(STEPS, -100.0), contact=False), car_following())
     by_check = {f.check: f for f in verdict.findings}
-    assert not by_check["goal"].passed and "did not reach its goal" in by_check["goal"].message
-    assert not by_check["harsh_braking"].passed
+    assert not by_check["goal"].passed and "stood still, its route clear" in by_check["goal"].message
+    assert not by_check["harsh_braking"].passed and "no one on a collision course" in by_check["harsh_braking"].message
     assert verdict.facts["peak_braking"] == pytest.approx((10.0 / 6) / 0.05, rel=1e-3)  # 10 m/s shed in 0.3 s
     assert verdict.facts["failure"] == "goal"  # the more serious failure names the test
+    assert verdict.facts["violation"] == "stalled"
+
+
+def test_every_failure_class_and_violation_has_a_description() -> None:
+    assert list(FAILURE_CLASSES) == ["collision", "goal", "near_miss", "harsh_braking"]
+    assert {"crossing", "turn_across", "entering", "pedestrian", "oncoming", "stalled"} <= set(VIOLATIONS)
