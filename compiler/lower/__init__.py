@@ -64,49 +64,88 @@ def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: lis
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     notes = list(notes) + list(match.clamped)
     limit, limit_fact = _limit(scenario, notes)
-    routes = _routes(scenario, match, road_map, limit, crash.striker, crash.victim)
-    striker, victim = routes[crash.striker], routes[crash.victim]
-    found = contacts(striker, victim, crash.type)
-    if not found:
-        # The lanes the turns enter are the least certain facts of a report: let the turns
-        # enter the lane they come from, and say so, before giving up.
-        loose = _without_turn_lanes(scenario, (crash.striker, crash.victim))
-        if loose is not scenario:
-            loose_routes = _routes(loose, match, road_map, limit, crash.striker, crash.victim)
-            found = contacts(loose_routes[crash.striker], loose_routes[crash.victim], crash.type)
-            if found:
-                routes = loose_routes
-                notes.append("the turns' target lanes keep the pair apart on this site: they enter their own lanes")
-    if not found:
-        raise UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
-    for route in routes.values():
-        notes += route.notes
+    first: UnsatError | None = None
+    for variant, prefer, why in _stagings(scenario, crash.type, crash.striker, crash.victim):
+        routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer)
+        striker, victim = routes[crash.striker], routes[crash.victim]
+        found = contacts(striker, victim, crash.type)
+        if not found:
+            first = first or UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
+            continue
+        try:
+            contact, solution = _schedule(scenario, routes, found, limit, limit_fact)
+        except ConflictError as failure:
+            first = first or UnsatError(_conflict(scenario, match, failure.facts))
+            continue
+        extra = [why] if why else []
+        extra += [n for route in routes.values() for n in route.notes]
+        if solution.relaxed:
+            extra.append("no natural-looking timing fits: speeds or waits are at the edge of what the facts allow")
+        return Lowered(
+            scenario,
+            match,
+            road_map,
+            routes,
+            contact,
+            solution,
+            crash.type,
+            crash.striker,
+            crash.victim,
+            tuple(notes + extra),
+        )
+    assert first is not None
+    raise first
+
+
+Staging = tuple[Scenario, dict[str, tuple[ActionKind, str]], str | None]
+
+
+def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: str) -> list[Staging]:
+    """The ways to stage the scenario, tried in turn: each changes only what the report left
+    open (which way an unnamed junction move goes, which lane a turn enters), and says so."""
+    striker, victim = scenario.participant(striker_id), scenario.participant(victim_id)
+    assert striker is not None and victim is not None
+    out: list[Staging] = []
+    meet = _meeting_move(striker, victim, crash)
+    if meet is not None:
+        out.append((scenario, {striker_id: meet}, None))
+    out.append((scenario, {}, None))
+    loose = _without_turn_lanes(scenario, (striker_id, victim_id))
+    if loose is not scenario:
+        # The lanes the turns enter are the least certain facts of a report.
+        why = "the turns' target lanes keep the pair apart on this site: they enter their own lanes"
+        out.append((loose, {}, why))
+    meet = _meeting_move(victim, striker, crash)
+    if meet is not None:
+        out.append((scenario, {victim_id: meet}, None))
+    return out
+
+
+def _schedule(
+    scenario: Scenario, routes: dict[str, Route], found: list[Contact], limit: float, limit_fact: Fact
+) -> tuple[Contact, Solution]:
+    """The first of the best contacts whose constraints Z3 can satisfy, with their solution."""
+    crash = scenario.crash
     facts = _facts(scenario, routes, limit, limit_fact)
-    problem_of = lambda c: Problem(  # noqa: E731
-        routes=routes,
-        striker=crash.striker,
-        victim=crash.victim,
-        crash=crash.type,
-        contact=c,
-        vmax={pid: _vmax(r.participant, limit, limit_fact, facts) for pid, r in routes.items()},
-        preferred={pid: _preferred(r.participant, limit) for pid, r in routes.items()},
-        facts=facts,
-        stationary=_stationary(scenario, crash.striker),
-    )
     first_failure: ConflictError | None = None
     for contact in found[:MAX_CONTACTS]:
+        problem = Problem(
+            routes=routes,
+            striker=str(crash.striker),
+            victim=str(crash.victim),
+            crash=crash.type,  # type: ignore[arg-type]
+            contact=contact,
+            vmax={pid: _vmax(r.participant, limit, limit_fact, facts) for pid, r in routes.items()},
+            preferred={pid: _preferred(r.participant, limit) for pid, r in routes.items()},
+            facts=facts,
+            stationary=_stationary(scenario, str(crash.striker)),
+        )
         try:
-            solution = solve(problem_of(contact))
+            return contact, solve(problem)
         except ConflictError as failure:
             first_failure = first_failure or failure
-            continue
-        if solution.relaxed:
-            notes.append("no natural-looking timing fits: speeds or waits are at the edge of what the facts allow")
-        return Lowered(
-            scenario, match, road_map, routes, contact, solution, crash.type, crash.striker, crash.victim, tuple(notes)
-        )
     assert first_failure is not None
-    raise UnsatError(_conflict(scenario, match, first_failure.facts))
+    raise first_failure
 
 
 def _without_turn_lanes(scenario: Scenario, ids: tuple[str, ...]) -> Scenario:
@@ -164,7 +203,13 @@ def _stationary(scenario: Scenario, striker: str) -> set[str]:
 
 
 def _routes(
-    scenario: Scenario, match: SiteMatch, road_map: RoadMap, limit: float, striker: str, victim: str
+    scenario: Scenario,
+    match: SiteMatch,
+    road_map: RoadMap,
+    limit: float,
+    striker: str,
+    victim: str,
+    prefer: dict[str, tuple[ActionKind, str]],
 ) -> dict[str, Route]:
     routes: dict[str, Route] = {}
     people = [p for p in scenario.participants if p.role is Role.PEDESTRIAN]
@@ -173,7 +218,7 @@ def _routes(
             side = _driveway_side(p, scenario, striker, victim)
             partner = scenario.participant(victim if p.id == striker else striker)
             wrong_way = partner.lane if partner is not None and isinstance(partner.lane, int) else None
-            routes[p.id] = vehicle_route(p, match, road_map, _preferred(p, limit), side, wrong_way)
+            routes[p.id] = vehicle_route(p, match, road_map, _preferred(p, limit), side, wrong_way, prefer.get(p.id))
     for p in people:
         partner_id = victim if p.id == striker else striker
         partner = routes.get(partner_id) or next(iter(routes.values()), None)
@@ -183,6 +228,33 @@ def _routes(
         exit_s = max((e.hi for e in partner.events if e.kind in JUNCTION_MOVES), default=None)
         routes[p.id] = pedestrian_route(p, partner, match, crash, exit_s)
     return routes
+
+
+def _meeting_move(p: Participant, partner: Participant, crash: CrashType) -> tuple[ActionKind, str] | None:
+    """For a vehicle whose actions name no junction move: the move that makes it meet its
+    partner the way the crash type says (head-on: leave facing the partner's way back)."""
+    if crash not in (CrashType.FRONTAL, CrashType.REAR_END) or Role.PEDESTRIAN in (p.role, partner.role):
+        return None
+    if any(a.kind in JUNCTION_MOVES for a in p.known_actions):
+        return None
+    mine, theirs = _final_heading(p), _final_heading(partner)
+    if mine is None or theirs is None:
+        return None
+    want = (theirs + 2) % 4 if crash is CrashType.FRONTAL else theirs
+    move = {0: ActionKind.GO_ACROSS, 1: ActionKind.TURN_RIGHT, 3: ActionKind.TURN_LEFT}.get((want - mine) % 4)
+    if move is None:
+        return None
+    return move, f"to meet {partner.id} {'head-on' if crash is CrashType.FRONTAL else 'from behind'}"
+
+
+def _final_heading(p: Participant) -> int | None:
+    """The compass quarter (0 north .. 3 west) a participant leaves the junction on."""
+    if not isinstance(p.heading, Heading):
+        return None
+    quarter = ("north", "east", "south", "west").index(p.heading.value)
+    for action in p.known_actions:
+        quarter += {ActionKind.TURN_RIGHT: 1, ActionKind.TURN_LEFT: -1, ActionKind.U_TURN: 2}.get(action.kind, 0)
+    return quarter % 4
 
 
 def _driveway_side(p: Participant, scenario: Scenario, striker: str, victim: str) -> Side:

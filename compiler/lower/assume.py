@@ -8,7 +8,7 @@ returned as a note that ends up in the plan. Known facts are never changed.
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 from sovarc.dsl.ir import (
     Action,
@@ -20,6 +20,7 @@ from sovarc.dsl.ir import (
     RoadKind,
     Role,
     Scenario,
+    Side,
     Unknown,
 )
 
@@ -37,22 +38,42 @@ CROSSING_KINDS = frozenset(
 )
 
 
+@dataclass
+class _Known:
+    """What the choices depend on: everyone (as filled in so far), the crash, the road."""
+
+    people: dict[str, Participant]
+    striker: str
+    victim: str
+    crash: CrashType
+    kind: RoadKind | None
+    notes: list[str]
+
+    def partner(self, p: Participant) -> Participant | None:
+        other = self.victim if p.id == self.striker else self.striker
+        if p.id not in (self.striker, self.victim):
+            other = self.striker
+        return self.people.get(other) if other != p.id else None
+
+
 def assume(scenario: Scenario) -> tuple[Scenario, list[str]]:
     notes: list[str] = []
     crash = _crash(scenario, notes)
-    striker, victim = str(crash.striker), str(crash.victim)
-    people = {p.id: p for p in scenario.participants}
     kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
+    known = _Known(
+        {p.id: p for p in scenario.participants}, str(crash.striker), str(crash.victim), crash.type, kind, notes
+    )  # type: ignore[arg-type]
+    people = known.people
     # actions first: a heading's choice depends on them
     for pid, p in list(people.items()):
-        people[pid] = _actions(p, people, striker, victim, crash.type, kind, notes)
-    for pid in (striker, victim, *people):
+        people[pid] = _actions(p, known)
+    for pid in (known.striker, known.victim, *people):
         p = people.get(pid)
         if p is not None and isinstance(p.heading, Unknown) and p.role is Role.VEHICLE:
-            people[pid] = _heading(p, people, striker, victim, crash.type, kind, notes)
+            people[pid] = _heading(p, known)
     for pid, p in list(people.items()):
         if isinstance(p.lane, Unknown) and p.role is Role.VEHICLE:
-            people[pid] = _lane(p, people, striker, victim, crash.type, notes)
+            people[pid] = _lane(p, known)
     participants = tuple(people[p.id] for p in scenario.participants)
     return replace(scenario, participants=participants, crash=crash), notes
 
@@ -80,59 +101,37 @@ def _crash(scenario: Scenario, notes: list[str]) -> Crash:
     return replace(crash, type=kind, striker=striker, victim=victim)
 
 
-def _partner(p: Participant, people: dict[str, Participant], striker: str, victim: str) -> Participant | None:
-    other = victim if p.id == striker else striker
-    if p.id not in (striker, victim):
-        other = striker
-    return people.get(other) if other != p.id else None
-
-
 def _wrong_way(p: Participant) -> bool:
     """Whether it ends up driving against its starting direction (retrograde, or a U-turn)."""
     kinds = [a.kind for a in p.known_actions]
     return (kinds.count(ActionKind.RETROGRADE) + kinds.count(ActionKind.U_TURN)) % 2 == 1
 
 
-def _actions(
-    p: Participant,
-    people: dict[str, Participant],
-    striker: str,
-    victim: str,
-    crash: CrashType,
-    kind: RoadKind | None,
-    notes: list[str],
-) -> Participant:
+def _actions(p: Participant, known: _Known) -> Participant:
     if not isinstance(p.actions, Unknown) and p.actions:
         return p
     if p.role is Role.PEDESTRIAN:
         chosen = ActionKind.CROSS
     else:
         chosen = ActionKind.FOLLOW_LANE
-        partner = _partner(p, people, striker, victim)
+        partner = known.partner(p)
         partner_crosses = partner is not None and any(a.kind in CROSSING_KINDS for a in partner.known_actions)
-        if kind is RoadKind.STRAIGHT and crash is CrashType.SIDE and not partner_crosses:
+        if known.kind is RoadKind.STRAIGHT and known.crash is CrashType.SIDE and not partner_crosses:
             chosen = ActionKind.DRIVE_INTO  # two cars along one road meet side-on only if one comes in
     what = "unknown" if isinstance(p.actions, Unknown) else "none"
-    notes.append(f"{p.id} actions {what}: planned as {chosen.value}")
+    known.notes.append(f"{p.id} actions {what}: planned as {chosen.value}")
     return replace(p, actions=(Action(chosen),))
 
 
-def _heading(
-    p: Participant,
-    people: dict[str, Participant],
-    striker: str,
-    victim: str,
-    crash: CrashType,
-    kind: RoadKind | None,
-    notes: list[str],
-) -> Participant:
-    partner = _partner(p, people, striker, victim)
+def _heading(p: Participant, known: _Known) -> Participant:
+    crash = known.crash
+    partner = known.partner(p)
     if partner is None or not isinstance(partner.heading, Heading):
         heading = Heading.NORTH
         reason = "no participant to take it from"
     else:
         base = COMPASS.index(partner.heading)
-        if crash is CrashType.SIDE and kind is not RoadKind.STRAIGHT:
+        if crash is CrashType.SIDE and known.kind is not RoadKind.STRAIGHT:
             turn, reason = 1, f"crossing {partner.id}'s path"
         else:
             turn = 2 if crash is CrashType.FRONTAL else 0
@@ -140,22 +139,33 @@ def _heading(
                 turn = 2 - turn
             reason = f"{'opposite' if turn == 2 else 'same'} as {partner.id}, for a {crash.value} crash"
         heading = COMPASS[(base + turn) % 4]
-    notes.append(f"{p.id} heading unknown: planned {heading.value} ({reason})")
+    known.notes.append(f"{p.id} heading unknown: planned {heading.value} ({reason})")
     return replace(p, heading=heading)
 
 
-def _lane(
-    p: Participant, people: dict[str, Participant], striker: str, victim: str, crash: CrashType, notes: list[str]
-) -> Participant:
-    partner = _partner(p, people, striker, victim)
-    lane = 1
-    if (
-        crash is CrashType.REAR_END
-        and partner is not None
-        and isinstance(partner.lane, int)
-        and partner.heading == p.heading
-        and not any(a.kind is ActionKind.CHANGE_LANE for a in p.known_actions + partner.known_actions)
-    ):
-        lane = partner.lane
-    notes.append(f"{p.id} lane unknown: planned in lane {lane}")
+def _lane(p: Participant, known: _Known) -> Participant:
+    partner = known.partner(p)
+    lane, reason = 1, ""
+    if partner is not None and partner.heading == p.heading and isinstance(p.heading, Heading):
+        lanes_known = isinstance(partner.lane, int)
+        other = partner.lane if isinstance(partner.lane, int) else 1
+        if known.crash is CrashType.REAR_END and lanes_known and not _changes_lane(p, partner):
+            lane, reason = other, f" (as {partner.id}, for a rear-end crash)"
+        elif known.crash is CrashType.SIDE and _cuts_across(p, partner) is Side.RIGHT:
+            lane, reason = other + 1, f" (left of {partner.id}: its right turn cuts across {partner.id}'s lane)"
+        elif known.crash is CrashType.SIDE and _cuts_across(partner, p) is Side.LEFT:
+            lane, reason = other + 1, f" (left of {partner.id}, whose left turn cuts across it)"
+    known.notes.append(f"{p.id} lane unknown: planned in lane {lane}{reason}")
     return replace(p, lane=lane)
+
+
+def _changes_lane(*people: Participant) -> bool:
+    return any(a.kind is ActionKind.CHANGE_LANE for p in people for a in p.known_actions)
+
+
+def _cuts_across(p: Participant, partner: Participant) -> Side | None:
+    """The side p turns to when it turns and its partner, going the same way, does not."""
+    turns = {ActionKind.TURN_RIGHT: Side.RIGHT, ActionKind.TURN_LEFT: Side.LEFT}
+    mine = [turns[a.kind] for a in p.known_actions if a.kind in turns]
+    theirs = [a for a in partner.known_actions if a.kind in turns]
+    return mine[0] if mine and not theirs else None

@@ -8,7 +8,9 @@ Lines meet in two ways:
 
 - a crossing: one point (s_striker, u), the lines at an angle;
 - a shared stretch: the lines run together (one lane), in the same or opposite direction;
-  there the contact may be anywhere, so it is a range with s_v = offset +- s_striker.
+  there the contact may be anywhere, so it is a range with s_v = offset +- s_striker;
+- where a shared stretch begins (a merge) or the victim's line leaves it (a diverge), one
+  point at the shallow angle between the lines.
 
 A crash type accepts only some: a rear-end needs a shared stretch in the same direction
 (or a shallow merge), a head-on a stretch in opposite directions (or a crossing met front
@@ -25,7 +27,9 @@ from sovarc.dsl.ir import CrashType
 
 STEP = 0.5  # m between the points compared
 TOUCH = 0.45  # m: lines closer than this meet
-MERGE_BACK = 4.0  # m before a merge where the converging lines' angle is measured
+MERGE_BACK = 4.0  # m before a merge (after a diverge) from where the lines' angle is measured
+APART = 1.0  # m: ... at the first point where they are this far apart
+APART_WITHIN = 30.0  # m: lines that stay closer over this far do not merge, they run together
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 
 
@@ -83,10 +87,11 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         offset = float(np.median(offsets)) + k
         found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
         close[lo : hi + 1] = False
-        merge = _merge(a, b, ha, hb, d, nearest, lo) if same else None
-        if merge is not None:
-            s_striker, u, turn = merge
-            found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
+        if same:
+            for meet in (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi)):
+                if meet is not None:
+                    s_striker, u, turn = meet
+                    found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
     for lo, hi in _runs(close):
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
@@ -100,15 +105,32 @@ def _merge(
     """Where two lines that come from different places join one lane, as (s, u, angle): the
     lines converge at a shallow angle, and the side of one meets the other's front there."""
     j = int(nearest[lo])
-    back = int(MERGE_BACK / STEP)
-    if lo < back or j < back:
-        return None
-    striker_apart = d[lo - back].min() > 1.0
-    victim_apart = d[:, j - back].min() > 1.0
-    if not (striker_apart or victim_apart):
-        return None
-    turn = float(abs((ha[lo - back] - hb[j - back] + 180.0) % 360.0 - 180.0))
-    return lo * STEP, j * STEP, max(turn, 5.0)
+    for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
+        if lo < k or j < k:
+            return None
+        if d[lo - k].min() > APART or d[:, j - k].min() > APART:
+            return lo * STEP, j * STEP, max(_turn(ha[lo - k], hb[j - k]), 5.0)
+    return None
+
+
+def _diverge(
+    a: np.ndarray, b: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, hi: int
+) -> tuple[float, float, float] | None:
+    """Where the victim's line leaves a lane the striker's line stays in, as (s, u, angle): a
+    striker following a vehicle that turns off hits its side as it angles out of the lane."""
+    j = int(nearest[hi])
+    for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
+        if hi + k >= len(a) or j + k >= len(b):
+            return None
+        if d[hi + k].min() > APART and d[:, j + k].min() > APART:
+            if _turn(hb[j], hb[j + k]) <= _turn(ha[hi], ha[hi + k]):
+                return None  # the striker is the one that leaves: its front moves away from the victim
+            return hi * STEP, j * STEP, max(_turn(ha[hi + k], hb[j + k]), 5.0)
+    return None
+
+
+def _turn(a: float, b: float) -> float:
+    return float(abs((a - b + 180.0) % 360.0 - 180.0))
 
 
 def _samples(points: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -60,15 +60,24 @@ class Polyline:
     def smoothed(self, window: float = 6.0) -> Polyline:
         """Resampled every metre and averaged over `window` metres: kinks where two lane shapes
         meet are rounded off, curves wider than the window keep their shape. Ends stay put."""
+        return self.smoothing(window)[0]
+
+    def smoothing(self, window: float = 6.0) -> tuple[Polyline, np.ndarray]:
+        """The smoothed line and, for each of its points, the arc length on this line it comes
+        from: np.interp(s, from_s, smooth.s) carries an arc length over (curves get shorter)."""
         points = self.resample(1.0)
         half = int(window // 2)
         if len(points) <= 2 * half + 1:
-            return self
+            return self, self.s
+        from_s = np.linspace(0.0, self.length, len(points))
         kernel = np.ones(2 * half + 1) / (2 * half + 1)
         padded = np.vstack([np.repeat(points[:1], half, axis=0), points, np.repeat(points[-1:], half, axis=0)])
         smooth = np.column_stack([np.convolve(padded[:, i], kernel, mode="valid") for i in (0, 1)])
         smooth[0], smooth[-1] = points[0], points[-1]
-        return Polyline(smooth)
+        line = Polyline(smooth)
+        if len(line.s) != len(from_s):  # a repeated point was dropped: carry over by proportion
+            from_s = line.s * (self.length / line.length)
+        return line, from_s
 
     def project(self, p: Point) -> tuple[float, float]:
         """(arc length of the closest point, distance to it)."""

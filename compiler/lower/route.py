@@ -55,11 +55,10 @@ class Route:
         return float(caps[inside].min()) if inside.any() else float(np.interp(a, at, caps))
 
     def speed_caps(self) -> tuple[np.ndarray, np.ndarray]:
-        """(arc lengths, speed cap at each): measured on the line as synthesis smooths it."""
+        """(arc lengths, speed cap at each) along the line (a vehicle's is already smoothed)."""
         if self.caps is None:
-            smooth = self.line.smoothed()
-            radii = smooth.curvature_radius(window=8.0)
-            self.caps = np.vstack([smooth.s, np.sqrt(LATERAL_ACCEL * np.minimum(radii, 1e6))])
+            radii = self.line.curvature_radius(window=8.0)
+            self.caps = np.vstack([self.line.s, np.sqrt(LATERAL_ACCEL * np.minimum(radii, 1e6))])
         return self.caps[0], self.caps[1]
 
     def stops(self) -> list[Event]:

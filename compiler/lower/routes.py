@@ -10,8 +10,10 @@ junction are applied by a `Drive` along the road they happen on.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
+import numpy as np
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.polyline import Polyline, bezier, concat, unit
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
@@ -27,10 +29,17 @@ GAP = 10.0  # m between two actions' stretches
 
 
 def vehicle_route(
-    p: Participant, match: SiteMatch, road_map: RoadMap, speed: float, side: Side, wrong_way_lane: int | None = None
+    p: Participant,
+    match: SiteMatch,
+    road_map: RoadMap,
+    speed: float,
+    side: Side,
+    wrong_way_lane: int | None = None,
+    prefer: tuple[ActionKind, str] | None = None,
 ) -> Route:
     """`side`: where a driveway move without a stated side goes; `wrong_way_lane`: which lane of the
-    other direction a retrograde move drives in (the crash partner's), both chosen by the caller."""
+    other direction a retrograde move drives in (the crash partner's); `prefer`: the junction move
+    (and why) to plan when the actions name none. All three are chosen by the caller."""
     placement = match.placement(p.id)
     if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
         raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))
@@ -43,21 +52,29 @@ def vehicle_route(
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
         entry = None
     else:
-        entry = _through_junction(drive, p, match, road_map, side)
+        entry = _through_junction(drive, p, match, road_map, side, prefer)
     events = order_stops(actions, drive.stretches, drive.line.length)
     first = min((e.lo for e in events if e.kind is not ActionKind.STOP), default=entry or drive.line.length * 0.6)
     if entry is not None:
         events = [_at_stop_line(e, entry, actions) for e in events]
     starts_at_rest = bool(actions) and actions[0].kind is ActionKind.STOP
-    drive.lanes.update(lanes_touched(drive.line, match))
+    # Smoothed once, here: the contact, the curve caps and the synthesized path all measure
+    # arc length on the line the car really drives, so the crash lands where it was solved.
+    line, from_s = drive.line.smoothing()
+
+    def carry(x: float) -> float:
+        return float(np.interp(x, from_s, line.s))
+
+    events = [replace(e, lo=carry(e.lo), hi=carry(e.hi)) for e in events]
+    drive.lanes.update(lanes_touched(line, match))
     return Route(
         participant=p,
         body=CAR,
-        line=drive.line,
+        line=line,
         events=events,
         lanes=tuple(sorted(drive.lanes)),
         edges=tuple(drive.edges),
-        start_hi=max(0.0, first - LEAD) if not drive.start_off_road else 0.0,
+        start_hi=carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0,
         starts_at_rest=starts_at_rest or drive.start_off_road,
         notes=[f"{p.id} {n}" for n in drive.notes],
     )
@@ -87,7 +104,9 @@ def _along(drive: Drive, actions: tuple[Any, ...], indices: range, *, start: flo
     return cursor
 
 
-def _through_junction(drive: Drive, p: Participant, match: SiteMatch, road_map: RoadMap, side: Side) -> float:
+def _through_junction(
+    drive: Drive, p: Participant, match: SiteMatch, road_map: RoadMap, side: Side, prefer: tuple[ActionKind, str] | None
+) -> float:
     """Extend the drive's line across the junction; returns the stop line's arc length."""
     actions = p.known_actions
     site = match.site
@@ -96,8 +115,9 @@ def _through_junction(drive: Drive, p: Participant, match: SiteMatch, road_map: 
     before = range(move_at if move_at is not None else len(actions))
     after = range(move_at + 1, len(actions)) if move_at is not None else range(0)
     if move_at is None:
-        move = _default_move(site, arm)
-        drive.notes.append(f"names no manoeuvre at the junction: planned to {move.value}")
+        move = _default_move(site, arm, prefer[0] if prefer else None)
+        why = f" ({prefer[1]})" if prefer and move is prefer[0] else ""
+        drive.notes.append(f"names no manoeuvre at the junction: planned to {move.value}{why}")
     else:
         move = actions[move_at].kind
     _along(drive, actions, before, start=max(LEAD, 0.35 * drive.line.length), side=side)
@@ -116,8 +136,8 @@ def _through_junction(drive: Drive, p: Participant, match: SiteMatch, road_map: 
     return entry
 
 
-def _default_move(site: Any, arm: Arm) -> ActionKind:
-    for move in DEFAULT_MOVES:
+def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
+    for move in ((prefer,) if prefer else ()) + DEFAULT_MOVES:
         if any(c.direction in JUNCTION_MOVES[move] for c in site.connections_from(arm)):
             return move
     return ActionKind.U_TURN

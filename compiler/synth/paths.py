@@ -22,8 +22,10 @@ from sovarc.compiler.lower.polyline import Polyline
 WAYPOINT_STEP = 4.0  # m
 MIN_RADIUS = 3.0  # m; a tight junction corner
 RADIUS_STEP = 1.08  # turning radii come in classes this far apart (a space per class)
+TIGHTER_STEPS = 4  # classes skipped per retry when a curve does not fit
 MAX_RADIUS = 2000.0
 CORRIDOR = 1.2  # m the path may stray from the route's line
+TIGHT_CORRIDOR = 0.3  # m, for curves tighter than the road's: they must hug its line
 CHECK_STEP = 0.5  # m between checked states
 EXTENSION = 60.0  # m of straight road added past the route's end, so that nobody runs out of path
 
@@ -65,8 +67,6 @@ def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     extended = Polyline(
         np.vstack([line.points, [end[0] + EXTENSION * math.sin(rad), end[1] + EXTENSION * math.cos(rad)]])
     )
-    if vehicle:
-        extended = extended.smoothed()
     count = max(2, math.ceil(extended.length / WAYPOINT_STEP) + 1)
     at = np.linspace(0.0, extended.length, count)
     states = [(*extended.point(s), _yaw(_tangent(extended, s))) for s in at]
@@ -76,28 +76,27 @@ def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     local = np.interp(at, extended.s, np.minimum(radii, 1e6))
     xs, ys = extended.points[:, 0], extended.points[:, 1]
     box = (float(xs.min()) - 50.0, float(xs.max()) + 50.0, float(ys.min()) - 50.0, float(ys.max()) + 50.0)
-    checker = _Corridor(extended)
+    checkers = {True: _Corridor(extended, CORRIDOR), False: _Corridor(extended, TIGHT_CORRIDOR)}
     lengths = np.empty(count - 1)
     spaces: list[ob.DubinsStateSpace | None] = []
     chords = 0
-    made: dict[float, tuple[ob.DubinsStateSpace, ob.SpaceInformation]] = {}
+    made: dict[tuple[float, bool], tuple[ob.DubinsStateSpace, ob.SpaceInformation]] = {}
     for k in range(count - 1):
-        tightest = 0.9 * min(local[k], local[k + 1])
-        radius = _radius_class(tightest)
-        if radius not in made:
-            made[radius] = _space(radius, box, checker)
-        space, info = made[radius]
-        a_state, b_state = space.allocState(), space.allocState()
-        _set(a_state, states[k])
-        _set(b_state, states[k + 1])
-        length = space.distance(a_state, b_state)
-        if length <= 1.5 * (at[k + 1] - at[k]) + 0.5 and info.checkMotion(a_state, b_state):
-            spaces.append(space)
-        else:
+        found = None
+        for n, radius in enumerate(_radius_classes(0.9 * min(local[k], local[k + 1]))):
+            key = (radius, n == 0)
+            if key not in made:
+                made[key] = _space(radius, box, checkers[n == 0])
+            found = _fit(*made[key], states[k], states[k + 1], at[k + 1] - at[k])
+            if found is not None:
+                break
+        if found is None:
             chords += 1
-            length = math.dist(states[k][:2], states[k + 1][:2])
+            lengths[k] = math.dist(states[k][:2], states[k + 1][:2])
             spaces.append(None)
-        lengths[k] = length
+        else:
+            lengths[k] = found[1]
+            spaces.append(found[0])
     return Path(at, states, lengths, spaces), chords
 
 
@@ -108,14 +107,45 @@ def _radius_class(radius: float) -> float:
     return round(MIN_RADIUS * RADIUS_STEP**steps, 6)
 
 
-class _Corridor:
-    """OMPL state validity: the front bumper within CORRIDOR metres of the route's line."""
+def _radius_classes(radius: float) -> list[float]:
+    """The class of `radius`, then tighter ones down to MIN_RADIUS (a few classes apart).
 
-    def __init__(self, line: Polyline) -> None:
+    The local radius is measured over a window; where the waypoints' headings ask for a
+    sharper bend than it, a tighter curve still beats a chord, whose kink no car can drive.
+    """
+    first = _radius_class(radius)
+    out = [first]
+    while out[-1] > MIN_RADIUS:
+        out.append(_radius_class(out[-1] / RADIUS_STEP**TIGHTER_STEPS))
+    return out
+
+
+def _fit(
+    space: ob.DubinsStateSpace,
+    info: ob.SpaceInformation,
+    a: tuple[float, float, float],
+    b: tuple[float, float, float],
+    step: float,
+) -> tuple[ob.DubinsStateSpace, float] | None:
+    """The Dubins curve from a to b and its length, when it is short and stays in the corridor."""
+    a_state, b_state = space.allocState(), space.allocState()
+    _set(a_state, a)
+    _set(b_state, b)
+    length = space.distance(a_state, b_state)
+    if length <= 1.5 * step + 0.5 and info.checkMotion(a_state, b_state):
+        return space, length
+    return None
+
+
+class _Corridor:
+    """OMPL state validity: the front bumper within `width` metres of the route's line."""
+
+    def __init__(self, line: Polyline, width: float) -> None:
         self.line = line
+        self.width = width
 
     def __call__(self, state: ob.State) -> bool:
-        return self.line.project((state.getX(), state.getY()))[1] <= CORRIDOR
+        return self.line.project((state.getX(), state.getY()))[1] <= self.width
 
 
 def _space(
