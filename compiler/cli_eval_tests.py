@@ -4,14 +4,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from sovarc.compiler.backend import default_map, plans_for
-from sovarc.compiler.maps import load_map
+from sovarc.compiler.backend import default_map, folder_name, plans_for
+from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.compiler.progress import progress
 from sovarc.dsl.errors import EXIT_OK, InputError, SovarcError, SynthesisError, UnsatError
 from sovarc.dsl.ir import RoadKind, Scenario
+
+if TYPE_CHECKING:
+    from sovarc.targets.fmu import EgoFmu, TestsTable
 
 DESCRIPTION = """\
 Stage every scenario on --roads sites of each map; on each planned site, every vehicle takes its
@@ -43,12 +47,13 @@ def add_tests_parser(which: Any, formatter: Any) -> None:
     tests.add_argument("--ego", metavar="FMU", help="the driving system under test (default: the reference ego)")
     tests.add_argument("--seed", type=int, default=0, help="seed for the sites and the random NPCs (default 0)")
     tests.add_argument("--json", action="store_true", help="print the figures and every verdict as JSON")
+    tests.add_argument("-o", "--output", help="write each test's verdict, and a PNG of each failed test, under here")
 
 
 def cmd_eval_tests(args: argparse.Namespace) -> int:
     from sovarc.compiler.scenario_io import load_scenario
     from sovarc.dsl import verify_or_raise
-    from sovarc.targets.fmu import TestsTable, reference_fmu, validate_fmu
+    from sovarc.targets.fmu import reference_fmu, validate_fmu
 
     files = _scenario_files(args.scenarios)
     scenarios: list[Scenario] = []
@@ -60,31 +65,52 @@ def cmd_eval_tests(args: argparse.Namespace) -> int:
     baseline = args.baseline == "random"
     report: dict[str, Any] = {}
     for map_path in args.map or [str(default_map())]:
-        road_map = load_map(map_path)
-        table = TestsTable()
         name = Path(map_path).name
-        for scenario in progress(scenarios, len(scenarios), label=f"tests {name}"):
-            kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
-            try:
-                results = plans_for(scenario, road_map, args.roads, args.seed)
-            except SovarcError as exc:  # no site of its kind could be chosen
-                for _ in range(args.roads):
-                    table.add_unplanned(scenario.name, kind, "-", "no fitting site", _first(exc))
-                continue
-            for r in results:
-                if r.plan is None:
-                    table.add_unplanned(scenario.name, kind, r.site, _why(r.error), _first(r.error))
-                else:
-                    table.add_plan(r.plan, ego, args.seed, baseline=baseline)
-            for _ in range(args.roads - len(results)):
-                table.add_unplanned(scenario.name, kind, "-", "no fitting site", "fewer fitting sites than asked")
+        out = Path(args.output) / folder_name(name) if args.output else None
+        road_map = load_map(map_path)
+        table = tests_table(scenarios, road_map, ego, roads=args.roads, seed=args.seed, baseline=baseline, out_dir=out)
         report[name] = table.to_json()
         if not args.json:
             title = f"Ego failures of {ego.model_name} on {name}: {len(scenarios)} scenario(s) x {args.roads} site(s)"
             print(table.render(title))
     if args.json:
         print(json.dumps(report, indent=2, ensure_ascii=False))
+    if args.output:
+        print(f"verdicts written to {args.output}/", file=sys.stderr)
     return EXIT_OK
+
+
+def tests_table(
+    scenarios: list[Scenario],
+    road_map: RoadMap,
+    ego: EgoFmu,
+    *,
+    roads: int,
+    seed: int = 0,
+    baseline: bool = True,
+    out_dir: Path | None = None,
+) -> TestsTable:
+    """Plan every scenario on `roads` sites of the map and run its tests (writing them under out_dir, if
+    given); a scenario-site that cannot be planned is counted, with its reason, and has no tests."""
+    from sovarc.targets.fmu import TestsTable
+
+    table = TestsTable()
+    for scenario in progress(scenarios, len(scenarios), label=f"tests {road_map.name}"):
+        kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
+        try:
+            results = plans_for(scenario, road_map, roads, seed)
+        except SovarcError as exc:  # no site of its kind could be chosen
+            for _ in range(roads):
+                table.add_unplanned(scenario.name, kind, "-", "no fitting site", _first(exc))
+            continue
+        for r in results:
+            if r.plan is None:
+                table.add_unplanned(scenario.name, kind, r.site, _why(r.error), _first(r.error))
+            else:
+                table.add_plan(r.plan, ego, seed, baseline=baseline, out_dir=out_dir)
+        for _ in range(roads - len(results)):
+            table.add_unplanned(scenario.name, kind, "-", "no fitting site", "fewer fitting sites than asked")
+    return table
 
 
 def _scenario_files(names: list[str]) -> list[Path]:

@@ -20,6 +20,7 @@ from sovarc.compiler.plan import Plan
 from sovarc.dsl.ir import RoadKind
 from sovarc.targets.fmu.interface import EgoFmu, validate_fmu
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
+from sovarc.targets.fmu.output import write_results
 from sovarc.targets.fmu.reference import reference_fmu
 from sovarc.targets.fmu.runner import Method, run_test_results
 from sovarc.targets.verdict import Verdict
@@ -79,14 +80,21 @@ class TestsTable:
         self.tallies.setdefault((str(kind), method), Tally()).add(verdict)
         self.verdicts.append(verdict)
 
-    def add_plan(self, plan: Plan, ego: EgoFmu, seed: int = 0, *, baseline: bool = True) -> None:
-        """Run the plan's report-derived tests and (with baseline) its random ones."""
+    def add_plan(
+        self, plan: Plan, ego: EgoFmu, seed: int = 0, *, baseline: bool = True, out_dir: Path | None = None
+    ) -> None:
+        """Run the plan's report-derived tests and (with baseline) its random ones; with out_dir, write
+        each test's verdict there, and a picture of each failed one."""
         self.planned[plan.kind.value] += 1
         for method in METHODS if baseline else METHODS[:1]:
-            for result in run_test_results(plan, ego, seed, method=method):
+            results = run_test_results(plan, ego, seed, method=method)
+            for result in results:
                 self.add(plan.kind.value, method, result.verdict)
                 self.walls.append(result.run.wall)
                 self.simulated.append(float(result.run.times[-1]))
+            if out_dir is not None:
+                write_results([r for r in results if r.verdict.passed], out_dir, pictures=False)
+                write_results([r for r in results if not r.verdict.passed], out_dir)
 
     def add_unplanned(self, scenario: str, kind: str, site: str, why: str, reason: str) -> None:
         self.unplanned.append(Unplanned(scenario, str(kind), site, why, reason))

@@ -25,8 +25,8 @@ def _never_meet(folder: Path) -> Path:
 
 
 @pytest.mark.slow  # lowering, synthesis, SUMO and the reference FMU
-def test_json_counts_every_test_of_both_methods_and_is_reproducible() -> None:
-    first = sovarc("eval", "tests", str(WRONG_WAY), "--roads", "1", "--json")
+def test_json_counts_every_test_of_both_methods_and_is_reproducible(tmp_path: Path) -> None:
+    first = sovarc("eval", "tests", str(WRONG_WAY), "--roads", "1", "--json", "-o", str(tmp_path))
     assert first.returncode == 0, first.stderr
     data = json.loads(first.stdout)["town.net.xml"]
     straight = data["rows"]["straight"]
@@ -40,6 +40,10 @@ def test_json_counts_every_test_of_both_methods_and_is_reproducible() -> None:
     failed = [v for v in data["verdicts"] if not v["passed"]]
     assert all(v["facts"]["failure"] and v["facts"]["violation"] for v in failed)
     assert sovarc("eval", "tests", str(WRONG_WAY), "--roads", "1", "--json").stdout == first.stdout
+    written = sorted(p.name for p in (tmp_path / "town.net.xml").iterdir())
+    assert len([n for n in written if n.endswith(".json")]) == 4
+    assert len([n for n in written if n.endswith(".png")]) == len(failed)  # a picture of each failure
+    assert f"verdicts written to {tmp_path}/" in first.stderr
 
 
 @pytest.mark.slow  # lowering, synthesis, SUMO and the reference FMU
