@@ -151,6 +151,8 @@ def _lane(p: Participant, known: _Known) -> Participant:
         other = partner.lane if isinstance(partner.lane, int) else 1
         if known.crash is CrashType.REAR_END and lanes_known and not _changes_lane(p, partner):
             lane, reason = other, f" (as {partner.id}, for a rear-end crash)"
+        elif lanes_known and any(a.kind is ActionKind.DRIVE_INTO for a in p.known_actions):
+            lane, reason = other, f" (pulls into {partner.id}'s lane)"
         elif known.crash is CrashType.SIDE and _cuts_across(p, partner) is Side.RIGHT:
             lane, reason = other + 1, f" (left of {partner.id}: its right turn cuts across {partner.id}'s lane)"
         elif known.crash is CrashType.SIDE and _cuts_across(partner, p) is Side.LEFT:

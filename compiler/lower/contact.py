@@ -9,8 +9,8 @@ Lines meet in two ways:
 - a crossing: one point (s_striker, u), the lines at an angle;
 - a shared stretch: the lines run together (one lane), in the same or opposite direction;
   there the contact may be anywhere, so it is a range with s_v = offset +- s_striker;
-- where a shared stretch begins (a merge) or the victim's line leaves it (a diverge), one
-  point at the shallow angle between the lines.
+- where a shared stretch begins (a merge; or the striker swerving into an oncoming lane) or
+  the victim's line leaves it (a diverge), one point at the angle between the lines.
 
 A crash type accepts only some: a rear-end needs a shared stretch in the same direction
 (or a shallow merge), a head-on a stretch in opposite directions (or a crossing met front
@@ -87,11 +87,13 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         offset = float(np.median(offsets)) + k
         found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
         close[lo : hi + 1] = False
-        if same:
-            for meet in (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi)):
-                if meet is not None:
-                    s_striker, u, turn = meet
-                    found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
+        meets = (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi)) if same else ()
+        if not same:
+            meets = (_swerve_into(a, ha, hb, d, nearest, lo),)
+        for meet in meets:
+            if meet is not None:
+                s_striker, u, turn = meet
+                found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
     for lo, hi in _runs(close):
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
@@ -126,6 +128,20 @@ def _diverge(
             if _turn(hb[j], hb[j + k]) <= _turn(ha[hi], ha[hi + k]):
                 return None  # the striker is the one that leaves: its front moves away from the victim
             return hi * STEP, j * STEP, max(_turn(ha[hi + k], hb[j + k]), 5.0)
+    return None
+
+
+def _swerve_into(
+    a: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int
+) -> tuple[float, float, float] | None:
+    """Where the striker's line swerves into a lane the victim drives the other way, as
+    (s, u, angle): its front, still angled, meets the oncoming victim's side."""
+    j = int(nearest[lo])
+    for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
+        if lo < k:
+            return None
+        if d[lo - k].min() > APART:
+            return lo * STEP, j * STEP, _turn(ha[lo - k], hb[j])
     return None
 
 

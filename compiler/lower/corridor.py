@@ -114,6 +114,15 @@ class Drive:
         target = self._target(number, False)
         self.line = blend(self.line, target, start, end)
 
+    def drift_to(self, number: int, at: float) -> float:
+        """Move over to own lane `number` from arc length `at` on (a turn that ends in the lane
+        the report names when no junction connection enters it); returns where it is there."""
+        end = min(at + change_length(self.speed), self.line.length - 5.0)
+        if end - at < 8.0:
+            return at
+        self.line = blend(self.line, self._target(number, False), at, end)
+        return end
+
     def retrograde(self, index: int, at: float) -> float:
         """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line."""
         lanes = self.corridor.own if self.against else self.corridor.other

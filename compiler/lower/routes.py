@@ -130,9 +130,17 @@ def _through_junction(
     drive.line = concat([drive.line, turn, exit_line])
     drive.corridor, drive.lane, drive.against = exit_corridor, exit_number, False
     drive._use(exit_corridor.own[exit_number - 1])
+    done = entry + turn.length
+    if isinstance(to, int) and to != exit_number and 1 <= to <= len(exit_corridor.own):
+        settled = drive.drift_to(to, done + 2.0)
+        if settled > done:
+            drive.notes.append(
+                f"turns into lane {exit_number} (no connection enters lane {to}), then moves to lane {to}"
+            )
+            done = settled
     if move_at is not None:
-        drive.stretches[move_at] = (entry, entry + turn.length)
-    _along(drive, actions, after, start=entry + turn.length + GAP, side=side)
+        drive.stretches[move_at] = (entry, done)
+    _along(drive, actions, after, start=done + GAP, side=side)
     return entry
 
 
