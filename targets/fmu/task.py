@@ -29,7 +29,8 @@ HOLD_RADIUS = 2.0  # m a holding ego may creep
 BUDGET_SLACK = 8.0  # s the ego may take beyond the plan's own time to reach the goal
 MAX_BUDGET = 120.0  # s: no test runs longer (the longest plans of the 90 reports last about 60 s)
 BIN = 1.0  # m: resolution of the speed profile
-JOIN_REACH = 5.0  # m: the route goes on along a lane of its last edge only this near the path's end
+JOIN_REACH = 15.0  # m: the route goes on along a lane of its last edge only this near the path's end (it may
+# end inside the junction, short of the lane's start)
 JOIN_TURN = 60.0  # deg: ... and only one that runs within this of the path's final heading
 JOIN_AHEAD = 4.0  # m along that lane from the path's end to where the route joins it
 

@@ -26,7 +26,7 @@ VIOLATIONS: dict[str, str] = {
     "cut_in": "cut in on a vehicle beside or behind it",
     "stalled": "stood still with its route clear",
     "slow": "too slow to reach its goal in time",
-    "phantom_braking": "braked hard with no one in its way",
+    "phantom_braking": "braked hard with no one on a collision course",
 }
 
 ENTERING = {"drive_into", "drive_off"}  # the IR actions of a vehicle entering or leaving the road
