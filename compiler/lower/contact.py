@@ -30,6 +30,8 @@ TOUCH = 0.45  # m: lines closer than this meet
 MERGE_BACK = 4.0  # m before a merge (after a diverge) from where the lines' angle is measured
 APART = 1.0  # m: ... at the first point where they are this far apart
 APART_WITHIN = 30.0  # m: lines that stay closer over this far do not merge, they run together
+FRONT_OFFSET = 0.9  # m: fronts this far apart sideways still meet (about half a car's width)
+HEAD_ON = 135.0  # degrees between headings for an offset frontal contact
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 
 
@@ -42,7 +44,7 @@ class Contact:
     sign: int  # +1: same direction; -1: opposite; 0: a crossing (lo == hi, s_v = offset)
     offset: float
     angle: float  # degrees between the two directions of travel at the contact, 0..180
-    kind: str  # 'crossing' or 'shared'
+    kind: str  # 'crossing', 'shared' or 'offset' (fronts meet head-on beside each other)
 
     def victim_s(self, s: float) -> float:
         return self.offset + self.sign * s if self.sign else self.offset
@@ -64,7 +66,9 @@ def _accepts(crash: CrashType, c: Contact) -> bool:
     if crash is CrashType.REAR_END:
         return (c.kind == "shared" and c.sign == 1) or (c.kind == "crossing" and c.angle < 45.0)
     if crash is CrashType.FRONTAL:
-        return (c.kind == "shared" and c.sign == -1) or (c.kind == "crossing" and c.angle >= 60.0)
+        return (c.kind == "shared" and c.sign == -1) or (c.kind in ("crossing", "offset") and c.angle >= 60.0)
+    if c.kind == "offset":
+        return False
     return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)
 
 
@@ -98,6 +102,13 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
+    # Fronts meet head-on a little to one side of each other before the lines cross (a car
+    # turning across an oncoming one is hit early in its turn): an offset frontal contact.
+    offset = (d[np.arange(len(a)), nearest] < FRONT_OFFSET) & (angle >= HEAD_ON) & ~parallel
+    for lo, hi in _runs(offset):
+        i = lo + int(np.argmax(angle[lo : hi + 1]))
+        s_striker, u = float(sa[i]), float(sb[nearest[i]])
+        found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "offset"))
     return found
 
 
@@ -175,4 +186,6 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
 def describe(c: Contact) -> str:
     if c.kind == "crossing":
         return f"paths cross at {c.angle:.0f} degrees"
+    if c.kind == "offset":
+        return f"fronts pass beside each other at {c.angle:.0f} degrees"
     return f"paths share {c.hi - c.lo:.0f} m of lane, {'same' if c.sign == 1 else 'opposite'} direction"

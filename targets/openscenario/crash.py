@@ -10,7 +10,7 @@ oblique crash whose corner meets before the bumper centre reaches C_A still cras
 a body that clips the other metres before C_A does not. Its time is kept as a fact.
 
 Angles and faces follow the SUMO oracle, so that the two targets agree: rear_end = striker front
-into victim rear, headings within 45 degrees; frontal = front into front, headings at least 135
+into victim rear, headings within 45 degrees; frontal = front into front, headings at least 100
 degrees apart; side = striker front into a side of the victim (the faces decide, not the angle)."""
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ from sovarc.targets.openscenario.kinematics import (
     pose_at,
 )
 from sovarc.targets.openscenario.readback import Entity, Pose, ScenarioFile
-from sovarc.targets.verdict import Finding
+from sovarc.targets.verdict import CRASH_ANGLES, Finding
 
 AREA_TOL = 0.1  # m beyond C_A's radius
 SCAN_STEP = 0.02  # s
@@ -41,7 +41,7 @@ NEAR_SLACK = 1e-3  # m: points this close to the nearest distance are part of th
 OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap (players detect the crash)
 
 # Relative heading (degrees, 0..180) allowed per crash type, and the victim faces it names.
-ANGLES: dict[str, tuple[float, float]] = {"rear_end": (0.0, 45.0), "frontal": (135.0, 180.0), "side": (0.0, 180.0)}
+ANGLES = CRASH_ANGLES
 VICTIM_FACES: dict[str, frozenset[str]] = {
     "rear_end": frozenset({"rear"}),
     "frontal": frozenset({"front"}),

@@ -8,8 +8,8 @@ Checks, in order:
 - `pair`: the first collision is between the report's striker and victim.
 - `impact_angle`: at the first touch, the faces and the angle between headings match the
   crash type: rear_end = striker front into victim rear, headings within 45 degrees;
-  frontal = front into front, headings at least 135 degrees apart; side = striker front into
-  a side of the victim.
+  frontal = front into front, headings at least 100 degrees apart (approaching each other;
+  see `verdict.CRASH_ANGLES`); side = striker front into a side of the victim.
 - `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
   its actions do not allow. Junction interiors have no painted lines and are not checked;
   sidewalks are always allowed to pedestrians.
@@ -33,13 +33,13 @@ from sovarc.dsl.ir import CrashType
 from sovarc.targets.sumo.bodies import Body, Contact, closest_points, first_touch, overlap
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
-from sovarc.targets.verdict import Finding, Verdict
+from sovarc.targets.verdict import CRASH_ANGLES, Finding, Verdict
 
 TARGET = "sumo"
 LINE_TOLERANCE = 0.25  # m a body may reach over a lane line before it counts as crossing it
 TRACK_TOLERANCE = 0.10  # m between a replayed position and its sample
-REAR_END_MAX_ANGLE = 45.0
-FRONTAL_MIN_ANGLE = 135.0
+REAR_END_MAX_ANGLE = CRASH_ANGLES["rear_end"][1]
+FRONTAL_MIN_ANGLE = CRASH_ANGLES["frontal"][0]
 VICTIM_FACES = {CrashType.REAR_END: ("rear",), CrashType.FRONTAL: ("front",), CrashType.SIDE: ("left", "right")}
 
 
