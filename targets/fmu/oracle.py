@@ -10,7 +10,7 @@ The NPCs replay their trajectories and never react, so the oracle counts only wh
   a step counts when, had the ego stood still, the conflict would have come OWN_MARGIN later or never
   (an NPC closing from behind or driving into a slow ego is not the ego's near miss);
 - harsh_braking: it never braked harder than HARSH_BRAKING, unless forced to by a body that was
-  coming at it (the same test at the moment it braked).
+  coming at it (the same test at the moment it braked) or by the state the test began in.
 The verdict's facts give the measured values, `failure` (the first failed check) and `violation`,
 what the ego did wrong in the spirit of the paper's violation types (violations.py).
 """
@@ -44,6 +44,7 @@ HARSH_BRAKING = 5.0  # m/s²: braking harder than this is harsh (about half of g
 BLOCKED_AHEAD = 25.0  # m of its route ahead of the ego where a body in the way holds it up
 HELD_UP = 0.5  # m/s: a body ahead on the route no faster than the ego plus this holds it up
 BRAKE_WINDOW = 1.0  # s around the hardest braking in which to look for what the ego braked for
+START_GRACE = 1.0  # s: harsh braking begun before this answers the state the test began in
 
 # The checks that can fail a test, most serious first (the evaluation's table counts them in this order).
 FAILURE_CLASSES: dict[str, str] = {
@@ -99,22 +100,10 @@ def judge(run: Run, plan: Plan, *, seed: int = 0, fmu: str = "", method: str = "
         assert own is not None
         failure, partner = "near_miss", (own[2], own[1])
 
-    decel, k = _peak_braking(run)
-    facts["peak_braking"] = _r(decel)
-    harsh = decel > HARSH_BRAKING + 1e-9
-    braked_for, forced = _braked_for(ttc, run.times, k) if harsh else (None, False)
-    own_braking = harsh and not forced
-    message = f"the hardest braking was {decel:.1f} m/s²"
-    if harsh:
-        message += f" (limit {HARSH_BRAKING:g})"
-        message += (
-            f", forced by {braked_for} coming at it"
-            if forced
-            else f", for {braked_for or 'no one on a collision course'}"
-        )
-    when = float(run.times[k + 1]) if decel > 0 else None
-    findings.append(Finding("harsh_braking", not own_braking, message, when))
-    if own_braking and failure is None:
+    finding, peak, braked_for, k = _braking(run, ttc)
+    facts["peak_braking"] = _r(peak)
+    findings.append(finding)
+    if not finding.passed and failure is None:
         failure, partner = "harsh_braking", (braked_for, float(run.times[k]))
 
     facts["failure"] = failure
@@ -304,14 +293,35 @@ def _braked_for(ttc: _Ttc, times: np.ndarray, k: int) -> tuple[str | None, bool]
     return name, not bool(ttc.own[name][j])
 
 
-def _peak_braking(run: Run) -> tuple[float, int]:
-    """The hardest deceleration over one step, and the step it began."""
+def _braking(run: Run, ttc: _Ttc) -> tuple[Finding, float, str | None, int]:
+    """The harsh-braking finding, the hardest deceleration, what the ego braked for and the step it began.
+
+    Braking that began within START_GRACE answers the state the test put the ego in (a plan may start
+    a striker a car length behind its victim), so it is reported but not held against the ego."""
     speed = run.ego_track.speed
-    if len(speed) < 2:
-        return 0.0, 0
-    decel = -np.diff(speed) / STEP
-    k = int(np.argmax(decel))
-    return max(float(decel[k]), 0.0), k
+    decel = -np.diff(speed) / STEP if len(speed) > 1 else np.zeros(1)
+    peak = max(float(decel.max()), 0.0)
+    harsh = decel > HARSH_BRAKING + 1e-9
+    counted = decel.copy()
+    k = 0
+    while k < len(harsh) and run.times[k] < START_GRACE:  # each harsh braking begun in the grace, to its end
+        while k < len(harsh) and harsh[k]:
+            counted[k] = 0.0
+            k += 1
+        k += 1
+    k = int(np.argmax(counted))
+    message = f"the hardest braking was {peak:.1f} m/s²"
+    if counted[k] <= HARSH_BRAKING + 1e-9:
+        if peak > HARSH_BRAKING + 1e-9:
+            message += f" (limit {HARSH_BRAKING:g}), at the start, answering the state the test began in"
+        at = int(np.argmax(decel))
+        return Finding("harsh_braking", True, message, float(run.times[at + 1]) if peak > 0 else None), peak, None, at
+    braked_for, forced = _braked_for(ttc, run.times, k)
+    message = f"the hardest braking was {float(counted[k]):.1f} m/s² (limit {HARSH_BRAKING:g})"
+    message += (
+        f", forced by {braked_for} coming at it" if forced else f", for {braked_for or 'no one on a collision course'}"
+    )
+    return Finding("harsh_braking", forced, message, float(run.times[k + 1])), peak, braked_for, k
 
 
 def _r(value: float) -> float:

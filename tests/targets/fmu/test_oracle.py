@@ -18,13 +18,14 @@ def _run(ego_speed: np.ndarray, other_x: np.ndarray, *, contact: bool, other_spe
     """V1 (the ego) starts with its front bumper at x = 50 and moves as ego_speed says; V2, in the same
     lane, is where other_x says, driving east at other_speed."""
     plan = car_following()
-    times = np.arange(STEPS) * 0.05
+    steps = len(ego_speed)
+    times = np.arange(steps) * 0.05
     ego_x = 50.0 + np.concatenate(([0.0], np.cumsum(ego_speed[:-1] * 0.05)))
-    lane = np.full(STEPS, -8.25)
-    east = np.full(STEPS, 90.0)
+    lane = np.full(steps, -8.25)
+    east = np.full(steps, 90.0)
     tracks = {
         "V1": Track("V1", CAR, ego_x, lane, east, ego_speed),
-        "V2": Track("V2", CAR, other_x, lane, east, np.full(STEPS, other_speed)),
+        "V2": Track("V2", CAR, other_x, lane, east, np.full(steps, other_speed)),
     }
     return Run(
         "V1",
@@ -32,7 +33,7 @@ def _run(ego_speed: np.ndarray, other_x: np.ndarray, *, contact: bool, other_spe
         times,
         tracks,
         ego_x - 20.0,
-        np.zeros((STEPS, 2)),
+        np.zeros((steps, 2)),
         "collision" if contact else "budget",
         Contact(float(times[-1]), "V2") if contact else None,
         (),
@@ -63,10 +64,10 @@ def test_a_moving_ego_run_into_from_behind_has_not_failed() -> None:
 
 
 def test_running_up_on_a_standing_car_is_a_near_miss_of_its_own_making() -> None:
-    """The ego comes at 10 m/s, brakes at 8 m/s² and stops 0.75 m behind a standing car."""
-    speed = np.concatenate((np.full(8, 10.0), np.maximum(10.0 - 8.0 * 0.05 * np.arange(1, 34), 0.0)))
+    """The ego comes at 10 m/s, brakes at 8 m/s² after 1.5 s and stops 0.75 m behind a standing car."""
+    speed = np.concatenate((np.full(30, 10.0), np.maximum(10.0 - 8.0 * 0.05 * np.arange(1, 34), 0.0)))
     ego_x = 50.0 + np.concatenate(([0.0], np.cumsum(speed[:-1] * 0.05)))
-    standing = np.full(STEPS, ego_x[-1] + CAR.length + 0.75)  # its front bumper
+    standing = np.full(len(speed), ego_x[-1] + CAR.length + 0.75)  # its front bumper
     run = _run(speed, standing, contact=False, other_speed=0.0)
     verdict = judge(run, car_following())
     by_check = {f.check: f for f in verdict.findings}
@@ -91,3 +92,16 @@ def test_harsh_braking_for_no_one_and_stalling_with_the_route_clear_are_failures
 def test_every_failure_class_and_violation_has_a_description() -> None:
     assert list(FAILURE_CLASSES) == ["collision", "goal", "near_miss", "harsh_braking"]
     assert {"crossing", "turn_across", "entering", "pedestrian", "oncoming", "stalled"} <= set(VIOLATIONS)
+
+
+def test_harsh_braking_begun_at_the_start_answers_the_state_the_test_began_in() -> None:
+    """A plan may start the ego a car length behind the car it strikes: braking then is not its choice."""
+    early = np.concatenate((np.linspace(10.0, 0.0, 7), np.zeros(STEPS - 7)))
+    late = np.concatenate((np.full(30, 10.0), np.linspace(10.0, 0.0, 7), np.zeros(STEPS - 37)))
+    findings = {}
+    for name, speed in (("early", early), ("late", late)):
+        verdict = judge(_run(speed, np.full(STEPS, -100.0), contact=False), car_following())
+        findings[name] = next(f for f in verdict.findings if f.check == "harsh_braking")
+        assert verdict.facts["peak_braking"] > 30.0
+    assert findings["early"].passed and "answering the state the test began in" in findings["early"].message
+    assert not findings["late"].passed and findings["late"].time == pytest.approx(1.55, abs=0.06)
