@@ -13,7 +13,7 @@ from sovarc.compiler.backend import TARGETS, compile_sites, default_map, passed,
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.progress import progress
-from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
+from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, SovarcError
 from sovarc.dsl.ir import Scenario
 
 # The OpenSCENARIO versions the target writes (targets.openscenario.VERSIONS, which is not
@@ -160,7 +160,11 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
                     message = r.error.diagnostics[0].message if r.error else ""
                     rows.append(_row(path, kind, r.site, "planning failed", message))
                     continue
-                verdict = sumo.check(r.plan)
+                try:
+                    verdict = sumo.check(r.plan)
+                except SovarcError as error:  # SUMO refused the scenario: counted, and the batch goes on
+                    rows.append(_row(path, kind, r.site, "replay error", str(error)))
+                    continue
                 failure = classify(verdict)
                 reasons = "; ".join(f.message for f in verdict.failures)
                 rows.append(_row(path, kind, r.site, failure, reasons))

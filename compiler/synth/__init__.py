@@ -15,6 +15,7 @@ import math
 import numpy as np
 from sovarc.compiler.lower import Lowered
 from sovarc.compiler.lower.route import Route
+from sovarc.compiler.lower.solve import AFTER_CRASH
 from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
 from sovarc.compiler.synth.limits import worst_ratio
 from sovarc.compiler.synth.paths import Path, plan_path
@@ -94,7 +95,11 @@ def _trajectory(
 
 def _check_drivable(pid: str, path: Path, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
     """TOPP-RA's envelope on the path, every metre of the driven stretch, over the planned speeds."""
-    if s[-1] - s[0] < 2.0:
+    upto = lowered.solution.impact.get(pid)
+    if upto is not None:  # what it would drive after the crash is not driven: not judged
+        keep = s <= upto + AFTER_CRASH
+        s, v = s[keep], v[keep]
+    if len(s) < 2 or s[-1] - s[0] < 2.0:
         return  # it (almost) never moves
     grid = np.arange(s[0], s[-1], 1.0)
     unique, first = np.unique(np.round(s, 3), return_index=True)

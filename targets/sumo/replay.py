@@ -166,6 +166,16 @@ def _edge(lane: str) -> str:
     return lane.rsplit("_", 1)[0]
 
 
+def _depart_lane(libsumo: Any, where: str, edges: Sequence[str]) -> str:
+    """The lane index to insert on: the first sample's, when the route's first edge has it
+    (a trajectory that starts inside a junction does not); moveToXY places it exactly anyway."""
+    index = where.rsplit("_", 1)[1]
+    first_edge = edges[0] if edges else _edge(where)
+    if where.startswith(":") or _edge(where) != first_edge:
+        return "0"
+    return index if int(index) < libsumo.edge.getLaneNumber(first_edge) else "0"
+
+
 def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], vehicles: Sequence[str]) -> Trace:
     """Add every participant at t = 0 and move it onto its FCD position every step (moveToXY with
     the lane as a hint, keepRoute=2: exact position), as SUMO's fcd-replay device does."""
@@ -174,7 +184,7 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
     for v in vehicles:
         first = tracks[v][0]
         edges = list(dict.fromkeys(_edge(e.where) for e in tracks[v] if not e.where.startswith(":")))
-        lane = first.where.rsplit("_", 1)[1]
+        lane = _depart_lane(libsumo, first.where, edges)
         try:
             libsumo.route.add(f"{v}.replay", edges or [_edge(first.where)])
             libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
