@@ -2,7 +2,7 @@
 
 Lowering needs a heading, a lane and actions for every vehicle, and a crash type with its
 striker and victim. Each choice here follows from the facts that are known (a rear-end's
-vehicles share a heading, a head-on's oppose unless one drives on the wrong side) and is
+vehicles share a heading, a head-on's oppose unless one of them turns back) and is
 returned as a note that ends up in the plan. Known facts are never changed.
 """
 
@@ -95,16 +95,16 @@ def _crash(scenario: Scenario, notes: list[str]) -> Crash:
         if a and b and isinstance(a.heading, Heading) and isinstance(b.heading, Heading):
             turn = (COMPASS.index(a.heading) - COMPASS.index(b.heading)) % 4
             kind = {0: CrashType.REAR_END, 2: CrashType.FRONTAL}.get(turn, CrashType.SIDE)
-            if _wrong_way(a) != _wrong_way(b):
+            if _turns_back(a) != _turns_back(b):
                 kind = {CrashType.REAR_END: CrashType.FRONTAL, CrashType.FRONTAL: CrashType.REAR_END}.get(kind, kind)
         notes.append(f"crash type unknown: planned as {kind.value}, from the headings")
     return replace(crash, type=kind, striker=striker, victim=victim)
 
 
-def _wrong_way(p: Participant) -> bool:
-    """Whether it ends up driving against its starting direction (retrograde, or a U-turn)."""
-    kinds = [a.kind for a in p.known_actions]
-    return (kinds.count(ActionKind.RETROGRADE) + kinds.count(ActionKind.U_TURN)) % 2 == 1
+def _turns_back(p: Participant) -> bool:
+    """Whether it ends up travelling against its starting heading (an odd number of U-turns).
+    A retrograde driver does not: it keeps its heading in the other direction's lane."""
+    return [a.kind for a in p.known_actions].count(ActionKind.U_TURN) % 2 == 1
 
 
 def _actions(p: Participant, known: _Known) -> Participant:
@@ -135,7 +135,7 @@ def _heading(p: Participant, known: _Known) -> Participant:
             turn, reason = 1, f"crossing {partner.id}'s path"
         else:
             turn = 2 if crash is CrashType.FRONTAL else 0
-            if _wrong_way(p) != _wrong_way(partner):
+            if _turns_back(p) != _turns_back(partner):
                 turn = 2 - turn
             reason = f"{'opposite' if turn == 2 else 'same'} as {partner.id}, for a {crash.value} crash"
         heading = COMPASS[(base + turn) % 4]

@@ -123,6 +123,10 @@ class Drive:
         self.line = blend(self.line, self._target(number, False), at, end)
         return end
 
+    def start_in(self, number: int) -> None:
+        """Begin in own lane `number` instead (nothing has been placed on the line yet)."""
+        self.line = self._target(number, False)
+
     def retrograde(self, index: int, at: float) -> float:
         """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line."""
         lanes = self.corridor.own if self.against else self.corridor.other

@@ -26,6 +26,7 @@ from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 ROAD_MOVES = frozenset({ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.DRIVE_OFF})
 DEFAULT_MOVES = (ActionKind.GO_ACROSS, ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT)
 GAP = 10.0  # m between two actions' stretches
+DRIVEWAY_TO_JUNCTION = 35.0  # m from a driveway a car pulls out of to the junction it then crosses
 
 
 def vehicle_route(
@@ -120,7 +121,12 @@ def _through_junction(
         drive.notes.append(f"names no manoeuvre at the junction: planned to {move.value}{why}")
     else:
         move = actions[move_at].kind
-    _along(drive, actions, before, start=max(LEAD, 0.35 * drive.line.length), side=side)
+    start = max(LEAD, 0.35 * drive.line.length)
+    if any(actions[k].kind is ActionKind.DRIVE_INTO for k in before):
+        # Out of a driveway near the junction: its slow, tight start (which caps the speed of
+        # the whole first leg) then leaves the car a short way to go.
+        start = max(start, drive.line.length - DRIVEWAY_TO_JUNCTION)
+    _along(drive, actions, before, start=start, side=side)
     if drive.left_road:
         return drive.line.length
     to = actions[move_at].to if move_at is not None else None
@@ -160,8 +166,15 @@ def _junction_line(
         connection = _pick_connection(match, arm, move, current, to)
         if connection.from_lane != current.id:
             number = _number(arm, connection.from_lane)
-            drive.shift_to(number)
-            drive.notes.append(f"moves to lane {number} to {move.value}")
+            try:
+                drive.shift_to(number)
+                drive.notes.append(f"moves to lane {number} to {move.value}")
+            except LoweringError:
+                if drive.stretches:
+                    raise  # actions already placed on this arm: no other lane to start from
+                drive.start_in(number)
+                why = "the arm is too short to change lanes"
+                drive.notes.append(f"starts in lane {number}, the lane its {move.value} leaves from: {why}")
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
     if drive.against or move is ActionKind.U_TURN:

@@ -44,6 +44,7 @@ V_PED_MAX = 3.0
 T_MAX = 60.0  # s
 NICE_T_MAX = (12.0, 25.0)  # s: a short approach first (Z3 takes any model, often the bound)
 REAR_END_GAIN = 1.5  # m/s a rear-end striker is faster than its moving victim
+MIN_LEAD = 6.0  # m a vehicle drives before the crash at the least (LEAD is the natural length)
 AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach speed
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
@@ -285,7 +286,9 @@ def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool)
     """The participant is at arc length s at time t_hit, cruising on its last leg."""
     leg = motion.legs[-1]
     ramp = leg.v * leg.v / (2 * A_UP) if leg.from_rest else 0
-    lead = LEAD if motion.route.participant.role is Role.VEHICLE else 2.0
+    # Seen moving before the crash: LEAD metres when the site allows (a short arm of a city
+    # junction may not; then a few metres do).
+    lead = (LEAD if nice else MIN_LEAD) if motion.route.participant.role is Role.VEHICLE else 2.0
     need(f"{pid}.route", s - leg.start >= ramp + (0.0 if leg.from_rest else lead))
     if nice and not leg.from_rest:
         need(f"{pid}.route", s - leg.start >= 3.0 * leg.v)

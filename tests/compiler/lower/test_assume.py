@@ -69,13 +69,14 @@ def test_a_rear_end_partner_gets_the_same_heading_and_lane() -> None:
     assert "V2 heading unknown: planned north (same as V1, for a rear_end crash)" in notes
 
 
-def test_a_head_on_partner_comes_the_other_way_unless_one_drives_the_wrong_way() -> None:
+def test_a_head_on_partner_comes_the_other_way_unless_one_turns_back() -> None:
     text = UNKNOWNS.replace("type unknown", "type frontal").replace("striker unknown", "striker V2")
     head_on = assume(parse(text))[0].participant("V2")
     assert head_on is not None and head_on.heading is Heading.SOUTH
-    wrong_way = parse(text.replace("turn_left", "retrograde"))
-    v2 = assume(wrong_way)[0].participant("V2")
-    assert v2 is not None and v2.heading is Heading.NORTH  # V1 comes against the traffic in its own direction
+    wrong_way = assume(parse(text.replace("turn_left", "retrograde")))[0].participant("V2")
+    assert wrong_way is not None and wrong_way.heading is Heading.SOUTH  # V1 keeps its heading in V2's lane
+    turned = assume(parse(text.replace("turn_left", "u_turn")))[0].participant("V2")
+    assert turned is not None and turned.heading is Heading.NORTH  # V1 comes back towards V2
 
 
 def test_the_crash_type_follows_from_known_headings() -> None:
