@@ -15,6 +15,7 @@ loaded here or when asked (`fresh_process=True`); the child prints the trace as 
 
 from __future__ import annotations
 
+import itertools
 import json
 import subprocess
 import sys
@@ -98,7 +99,7 @@ def _run(config: Path, people: Sequence[str], vehicles: Sequence[str]) -> Trace:
             raise OracleError(f"SUMO cannot run {config}: {_log_tail(Path(tmp) / 'sumo.log') or exc}") from None
         try:
             return _drive(libsumo, tracks, people, vehicles)
-        except libsumo.TraCIException as exc:
+        except (libsumo.TraCIException, libsumo.libsumo.FatalTraCIError) as exc:
             raise OracleError(f"SUMO failed while replaying {config}: {exc}") from None
         finally:
             libsumo.close()
@@ -166,6 +167,15 @@ def _edge(lane: str) -> str:
     return lane.rsplit("_", 1)[0]
 
 
+def _connected(libsumo: Any, edges: Sequence[str]) -> bool:
+    """Whether each edge leads into the next through some lane's connection."""
+    for a, b in itertools.pairwise(edges):
+        lanes = (f"{a}_{i}" for i in range(libsumo.edge.getLaneNumber(a)))
+        if not any(_edge(link[0]) == b for lane in lanes for link in libsumo.lane.getLinks(lane)):
+            return False
+    return True
+
+
 def _depart_lane(libsumo: Any, where: str, edges: Sequence[str]) -> str:
     """The lane index to insert on: the first sample's, when the route's first edge has it
     (a trajectory that starts inside a junction does not); moveToXY places it exactly anyway."""
@@ -185,6 +195,8 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
         first = tracks[v][0]
         edges = list(dict.fromkeys(_edge(e.where) for e in tracks[v] if not e.where.startswith(":")))
         lane = _depart_lane(libsumo, first.where, edges)
+        if not _connected(libsumo, edges):
+            edges = edges[:1]  # e.g. a wrong-way stretch: SUMO would refuse the route at insertion
         try:
             libsumo.route.add(f"{v}.replay", edges or [_edge(first.where)])
             libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
