@@ -141,8 +141,11 @@ def _stated_in_mph_only(number: str, report: str) -> bool:
     return units == {"mph"}
 
 
-def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", report: Path | None = None) -> Imported:
-    """One ground-truth record as a Scenario, with notes on every repair."""
+def import_truth(
+    data: dict[str, Any], name: str, origin: str = "<truth>", report: Path | None = None, report_text: str | None = None
+) -> Imported:
+    """One ground-truth record as a Scenario, with notes on every repair; `report` is recorded as its provenance,
+    `report_text` (else that report's text) tells the unit of a bare speed-limit number."""
     imp = _Importer(origin)
     if data.get("T") == "yes":
         kind = RoadKind.T_JUNCTION
@@ -160,10 +163,10 @@ def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", repor
         striker if striker in cars else UNKNOWN,
         others[0] if striker in cars and len(others) == 1 else UNKNOWN,
     )
-    provenance, report_text = None, None
+    provenance = None
     if report is not None and report.is_file():
         provenance = Provenance(str(report), hashlib.sha256(report.read_bytes()).hexdigest(), "truth", UNKNOWN)
-        report_text = report.read_text(encoding="utf-8", errors="replace")
+        report_text = report_text or report.read_text(encoding="utf-8", errors="replace")
     scenario = Scenario(
         name,
         provenance,
@@ -186,8 +189,8 @@ def import_truth(data: dict[str, Any], name: str, origin: str = "<truth>", repor
 
 def import_truth_file(path: Path, reports_root: Path | None = None) -> Imported:
     """Import `.../truth/<category>/<n>.json`; the scenario is named `<category>_<n>`, and its provenance
-    points at `<reports_root>/<category>/<n>.txt` when that exists (by default the `reports` folder beside
-    `truth`, as in shared/data)."""
+    points at `<reports_root>/<category>/<n>.txt` when that exists. Without `reports_root` the report beside
+    `truth/` (as in shared/data) is still read, for the unit of a bare speed limit."""
     from sovarc.dsl import read_source
 
     source = read_source(path, "ground-truth JSON file")
@@ -200,6 +203,7 @@ def import_truth_file(path: Path, reports_root: Path | None = None) -> Imported:
     if not isinstance(data, dict) or "carInformation" not in data:
         raise ParseError(Diagnostic("not a ground-truth record (no carInformation)", Span.whole_file(source.name)))
     category = path.parent.name
-    reports_root = reports_root or path.resolve().parents[1].parent / "reports"
-    report = reports_root / category / f"{path.stem}.txt"
-    return import_truth(data, f"{category}_{path.stem}", source.name, report)
+    report = reports_root / category / f"{path.stem}.txt" if reports_root else None
+    beside = path.resolve().parents[1].parent / "reports" / category / f"{path.stem}.txt"
+    text = beside.read_text(encoding="utf-8", errors="replace") if report is None and beside.is_file() else None
+    return import_truth(data, f"{category}_{path.stem}", source.name, report, text)
