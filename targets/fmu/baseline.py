@@ -29,7 +29,9 @@ TRIES = 30
 def random_npcs(plan: Plan, ego: str, seed: int) -> Plan:
     """The plan with every participant but `ego` replaced by a random one on the same site."""
     site, net = _site(plan.map, plan.site)
-    rng = random.Random(f"{seed}:{plan.site}:{ego}")
+    # one draw per test: keyed by the scenario too, or every scenario staged on a site would get the
+    # same NPCs for the same ego, and one lucky or unlucky draw would count once per scenario
+    rng = random.Random(f"{seed}:{plan.scenario.name}:{plan.site}:{ego}")
     mine = plan.trajectory(ego)
     taken: list[Point] = [(mine.samples[0].x, mine.samples[0].y)]
     trajectories = []

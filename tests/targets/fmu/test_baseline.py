@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 import sumolib
 from sovarc.targets.fmu import random_npcs
@@ -27,6 +29,14 @@ def test_same_seed_same_npcs_other_seed_other_npcs() -> None:
     plan = crossing()
     assert random_npcs(plan, "V1", 7) == random_npcs(plan, "V1", 7)
     assert random_npcs(plan, "V1", 7).trajectory("V2") != random_npcs(plan, "V1", 8).trajectory("V2")
+
+
+def test_each_scenario_on_a_site_gets_its_own_draw() -> None:
+    """Scenarios staged on one site often give the same ego task: the same NPCs for all of them would
+    count one draw once per scenario."""
+    plan = crossing()
+    other = replace(plan, scenario=replace(plan.scenario, name="another_report"))
+    assert random_npcs(plan, "V1", 7).trajectory("V2") != random_npcs(other, "V1", 7).trajectory("V2")
 
 
 @pytest.mark.parametrize("make", [crossing, cut_in])
