@@ -18,7 +18,7 @@ from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.routes import vehicle_route
 from sovarc.compiler.lower.solve import V_PED_MAX, ConflictError, Fact, Problem, Solution, solve
-from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites
+from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites, scenario_needs, site_rotations
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.dsl.errors import Diagnostic, LoweringError, Severity, UnsatError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, RoadKind, Role, Scenario, Side, Speed
@@ -62,8 +62,41 @@ def sites_for(
 def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: list[str]) -> Lowered:
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
-    notes = list(notes) + list(match.clamped)
-    limit, limit_fact = _limit(scenario, notes)
+    limit, limit_fact = _limit(scenario, notes := list(notes))
+    first: UnsatError | None = None
+    for rotated in _rotations(scenario, match):
+        try:
+            return _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match)
+        except UnsatError as error:
+            first = first or error
+    assert first is not None
+    raise first
+
+
+def _rotations(scenario: Scenario, match: SiteMatch) -> list[SiteMatch]:
+    """The chosen rotation of the site, then its other fitting rotations: a crash the first
+    cannot stage (a car that drives on put on a T's stem) may fit another."""
+    others = site_rotations(match.site, scenario_needs(scenario), clamp=True)
+    return [match] + [m for m in others if m.rotation != match.rotation]
+
+
+def _lower_rotated(
+    scenario: Scenario,
+    match: SiteMatch,
+    road_map: RoadMap,
+    notes: list[str],
+    limit: float,
+    limit_fact: Fact,
+    chosen: SiteMatch,
+) -> Lowered:
+    crash = scenario.crash
+    assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
+    notes = notes + list(match.clamped)
+    if match.rotation != chosen.rotation:
+        notes.append(
+            f"staged with the report's compass turned {match.rotation} degrees, not {chosen.rotation}: "
+            "the crash cannot happen as first placed on this site"
+        )
     first: UnsatError | None = None
     for variant, prefer, why in _stagings(scenario, crash.type, crash.striker, crash.victim):
         routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer)

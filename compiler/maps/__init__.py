@@ -8,7 +8,7 @@ matches = match_sites(scenario, road_map, n=3, seed=0)
 from sovarc.compiler.maps.load import RoadMap, load_map
 from sovarc.compiler.maps.needs import Need, scenario_needs
 from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive
-from sovarc.compiler.maps.search import Placement, SiteMatch, match_site, match_sites, pick_diverse
+from sovarc.compiler.maps.search import Placement, SiteMatch, match_site, match_sites, pick_diverse, site_rotations
 from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites
 
 __all__ = [
@@ -28,4 +28,5 @@ __all__ = [
     "match_sites",
     "pick_diverse",
     "scenario_needs",
+    "site_rotations",
 ]

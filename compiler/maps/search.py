@@ -100,19 +100,17 @@ def match_sites(
 def match_site(site: Site, needs: tuple[Need, ...], *, clamp: bool = False) -> SiteMatch | None:
     """The best way to stage `needs` on `site`: an exact fit under the least rotation, else the
     rotation with the fewest clamps (when allowed); None when no rotation fits."""
-    best: SiteMatch | None = None
-    best_key: tuple[int, int] | None = None
+    found = site_rotations(site, needs, clamp=clamp)
+    return found[0] if found else None
+
+
+def site_rotations(site: Site, needs: tuple[Need, ...], *, clamp: bool = False) -> list[SiteMatch]:
+    """Every rotation under which `needs` fit `site`, best first: fewest clamps; then the most
+    participants without a stated manoeuvre that can go straight on (what lowering plans for
+    them), so that a T's stem is left to turners; then the rotation nearest to none."""
     order = sorted(ROTATIONS, key=lambda r: (abs(angle_diff(r + site.orientation, 0.0)), r))
-    for rotation in order:
-        found = _fit(site, needs, rotation, clamp)
-        if found is None:
-            continue
-        # Fewest clamps first; then the most participants without a stated manoeuvre that can
-        # go straight on (what lowering plans for them), so that a T's stem is left to turners.
-        key = (len(found.clamped), -_straight_on(site, needs, found))
-        if best_key is None or key < best_key:
-            best, best_key = found, key
-    return best
+    found = [m for rotation in order if (m := _fit(site, needs, rotation, clamp)) is not None]
+    return sorted(found, key=lambda m: (len(m.clamped), -_straight_on(site, needs, m)))
 
 
 def _straight_on(site: Site, needs: tuple[Need, ...], match: SiteMatch) -> int:
