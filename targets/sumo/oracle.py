@@ -12,7 +12,8 @@ Checks, in order:
   see `verdict.CRASH_ANGLES`); side = striker front into a side of the victim.
 - `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
   its actions do not allow. Junction interiors have no painted lines and are not checked;
-  sidewalks are always allowed to pedestrians.
+  sidewalks are always allowed to pedestrians, and to a car driving into or off the road by a
+  driveway (it crosses the sidewalk).
 
 SUMO's collision detection sees vehicles that overlap along one lane (including a wrong-way
 driver on the lane: head-on), and, with `--collision.check-junctions`, vehicle shapes that
@@ -29,7 +30,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from sovarc.compiler.plan import Plan, Trajectory
-from sovarc.dsl.ir import CrashType
+from sovarc.dsl.ir import ActionKind, CrashType
 from sovarc.targets.sumo.bodies import Body, Contact, closest_points, first_touch, overlap
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
@@ -242,28 +243,37 @@ def _lanes_finding(plan: Plan, trace: Trace, network: Network, until: float) -> 
             pose = trace.poses[t.participant][k]
             if pose is None or not t.lanes:
                 continue
-            crossed = lane_violation(network, t, pose)
+            crossed = lane_violation(network, t, pose, kerb=_uses_driveway(plan, t.participant))
             if crossed is not None:
                 message = f"{t.participant} enters lane {crossed}, which its actions do not allow"
                 return Finding("lane_lines", False, message, time)
     return Finding("lane_lines", True, "every participant keeps to the lanes its actions allow until the impact")
 
 
-def lane_violation(network: Network, t: Trajectory, pose: Pose) -> str | None:
+def _uses_driveway(plan: Plan, participant: str) -> bool:
+    p = plan.scenario.participant(participant)
+    kinds = {ActionKind.DRIVE_INTO, ActionKind.DRIVE_OFF}
+    return p is not None and any(a.kind in kinds for a in p.known_actions)
+
+
+def lane_violation(network: Network, t: Trajectory, pose: Pose, kerb: bool = False) -> str | None:
     """A lane beside the one SUMO has the participant on (same road, either direction) that its
     body reaches into beyond the tolerance, or that lane itself, when its actions do not allow it.
-    Lanes ahead or behind (a body overhanging the end of a lane) and junctions are not checked."""
+    Lanes ahead or behind (a body overhanging the end of a lane) and junctions are not checked.
+    Sidewalks are allowed to pedestrians, and with `kerb` to a car that drives into or off the
+    road by a driveway, which crosses the sidewalk on its way."""
     allowed = set(t.lanes)
     lane = network.lanes.get(pose.lane)
     if lane is None or lane.internal:
         return None
     pedestrian = t.body.vclass == "pedestrian"
-    if lane.id not in allowed and not (pedestrian and lane.pedestrian_only):
+    may_cross = pedestrian or kerb
+    if lane.id not in allowed and not (may_cross and lane.pedestrian_only):
         return None if pedestrian else lane.id
     beside = [
         other
         for other in network.alongside(lane)
-        if other.id not in allowed and not (pedestrian and other.pedestrian_only)
+        if other.id not in allowed and not (may_cross and other.pedestrian_only)
     ]
     for x, y in body_of(t, pose).corners(shrink=LINE_TOLERANCE):
         for other in beside:

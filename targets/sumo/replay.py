@@ -202,7 +202,7 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
             libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
         except libsumo.TraCIException:  # edges SUMO cannot route along: moveToXY (keepRoute=2) re-routes anyway
             libsumo.route.add(f"{v}.start", [_edge(first.where)])
-            libsumo.vehicle.add(v, f"{v}.start", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
+            libsumo.vehicle.add(v, f"{v}.start", typeID=first.type, depart="0", departLane="first", departSpeed="0")
         libsumo.vehicle.setSpeedMode(v, 0)
     for p in people:
         first = tracks[p][0]
