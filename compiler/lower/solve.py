@@ -275,9 +275,10 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
         _arrive(problem.victim, victim, s_v, t_hit, need, nice)
         if problem.crash is CrashType.REAR_END:
             need(crash, striker.legs[-1].v >= victim.legs[-1].v + REAR_END_GAIN)
-        elif problem.crash is CrashType.SIDE and c.angle < SHALLOW_SIDE:
-            # Nearly side by side, the striker's front reaches the victim's side only if it keeps
-            # up with it; a slower striker falls back and the victim runs into it instead.
+        elif nice and problem.crash is CrashType.SIDE and c.angle < SHALLOW_SIDE:
+            # Nearly side by side, the striker's front surely reaches the victim's side first if
+            # it keeps up with it; a slower striker may fall back into the victim's path instead.
+            # Preferred, not required: a short road may leave no room for it.
             along = math.cos(math.radians(c.angle))
             need(crash, striker.legs[-1].v * along >= victim.legs[-1].v)
 
