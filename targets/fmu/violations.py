@@ -23,7 +23,7 @@ VIOLATIONS: dict[str, str] = {
     "pedestrian": "did not slow for a pedestrian",
     "oncoming": "did not avoid an oncoming vehicle on its side of the road",
     "rear_end": "ran up on a slower or stopped vehicle ahead",
-    "cut_in": "cut in on a vehicle beside or behind it",
+    "cut_in": "moved across into a vehicle going its way (a lane change or merge)",
     "stalled": "stood still with its route clear",
     "slow": "too slow to reach its goal in time",
     "phantom_braking": "braked hard with no one on a collision course",
@@ -51,11 +51,12 @@ def violation(run: Run, plan: Plan, failure: str, other: str | None, time: float
         if actions & ENTERING:
             return "entering"
     apart = abs((float(them.heading[k]) - float(ego.heading[k]) + 180.0) % 360.0 - 180.0)
-    if apart <= SAME_WAY:
+    if apart <= SAME_WAY:  # ran up on it from behind, or moved across into it
         ex, ey = centre(float(ego.x[k]), float(ego.y[k]), float(ego.heading[k]), ego.body)
         ox, oy = centre(float(them.x[k]), float(them.y[k]), float(them.heading[k]), them.body)
         ahead, _ = to_ego_frame(ox, oy, ex, ey, float(ego.heading[k]))
-        return "rear_end" if ahead > 0.0 else "cut_in"
+        closing = float(ego.speed[k]) - float(them.speed[k]) * np.cos(np.radians(apart))
+        return "rear_end" if ahead > 0.0 and closing > 0.0 else "cut_in"
     if _turning(run, k):
         return "turn_across"
     return "oncoming" if apart >= ONCOMING else "crossing"

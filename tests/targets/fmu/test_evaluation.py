@@ -26,7 +26,7 @@ def test_table_counts_failures_per_kind_and_method(reference: EgoFmu) -> None:
     assert data["ratio"] is None and len(data["verdicts"]) == 8
     text = table.render()
     assert "straight            2        2      4               2       0" in text
-    assert "collision while the ego moved" in text and "cut in on a vehicle beside or behind it" in text
+    assert "collision while the ego moved" in text and "moved across into a vehicle going its way" in text
     assert "report-derived / random failures: no random failures" in text
     assert len(table.walls) == 8 and "wall time per test: median" in text
 
