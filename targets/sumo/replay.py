@@ -167,6 +167,14 @@ def _edge(lane: str) -> str:
     return lane.rsplit("_", 1)[0]
 
 
+def _drivable(libsumo: Any, edge: str, vclass: str) -> bool:
+    for i in range(libsumo.edge.getLaneNumber(edge)):
+        allowed, banned = libsumo.lane.getAllowed(f"{edge}_{i}"), libsumo.lane.getDisallowed(f"{edge}_{i}")
+        if (not allowed or vclass in allowed) and vclass not in banned:
+            return True
+    return False
+
+
 def _connected(libsumo: Any, edges: Sequence[str]) -> bool:
     """Whether each edge leads into the next through some lane's connection."""
     for a, b in itertools.pairwise(edges):
@@ -194,6 +202,9 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
     for v in vehicles:
         first = tracks[v][0]
         edges = list(dict.fromkeys(_edge(e.where) for e in tracks[v] if not e.where.startswith(":")))
+        vclass = libsumo.vehicletype.getVehicleClass(first.type)
+        while len(edges) > 1 and not _drivable(libsumo, edges[0], vclass):
+            edges.pop(0)  # it starts off the road (a driveway over a footway): insert it where it can drive
         lane = _depart_lane(libsumo, first.where, edges)
         if not _connected(libsumo, edges):
             edges = edges[:1]  # e.g. a wrong-way stretch: SUMO would refuse the route at insertion
@@ -201,7 +212,7 @@ def _drive(libsumo: Any, tracks: dict[str, list[Entry]], people: Sequence[str], 
             libsumo.route.add(f"{v}.replay", edges or [_edge(first.where)])
             libsumo.vehicle.add(v, f"{v}.replay", typeID=first.type, depart="0", departLane=lane, departSpeed="0")
         except libsumo.TraCIException:  # edges SUMO cannot route along: moveToXY (keepRoute=2) re-routes anyway
-            libsumo.route.add(f"{v}.start", [_edge(first.where)])
+            libsumo.route.add(f"{v}.start", edges[:1] or [_edge(first.where)])
             libsumo.vehicle.add(v, f"{v}.start", typeID=first.type, depart="0", departLane="first", departSpeed="0")
         libsumo.vehicle.setSpeedMode(v, 0)
     for p in people:
