@@ -1,14 +1,17 @@
 """The oracle of one FMU test: did the ego under test fail?
 
 The NPCs replay their trajectories and never react, so the oracle counts only what the ego did:
-- collision: the ego touched another body while moving faster than MOVING. An ego hit while it stood
-  still, or run into from behind by a replaying NPC, has not failed: that is the NPC's doing;
+- collision: the ego touched another body while moving faster than MOVING, and its own motion brought
+  the conflict on within CONTACT_WINDOW before (the test below). An ego hit while it stood still, run
+  into from behind, or driven into where standing still would not have helped has not failed: that is
+  the replaying NPC's doing (the paper counts the collisions an ADS causes);
 - goal: it reached its goal within its time budget (not judged when a collision ended the run). An
   ego held up at the end by a body ahead on its route (standing, or no faster than it) had no way
   through, as the NPCs never move aside: not its failure;
-- min_ttc: while it moved, its time to collision never fell below TTC_LIMIT through its own motion:
-  a step counts when, had the ego stood still, the conflict would have come OWN_MARGIN later or never
-  (an NPC closing from behind or driving into a slow ego is not the ego's near miss);
+- min_ttc: while it moved, its time to collision (the ego on along its route at its speed, the other
+  straight on at its velocity) never fell below TTC_LIMIT through its own motion: a step counts when,
+  had the ego stood still, the conflict would have come OWN_MARGIN later or never (an NPC closing
+  from behind or driving into a slow ego is not the ego's near miss);
 - harsh_braking: it never braked harder than HARSH_BRAKING, unless forced to by a body that was
   coming at it (the same test at the moment it braked) or by the state the test began in.
 The verdict's facts give the measured values, `failure` (the first failed check) and `violation`,
@@ -44,6 +47,7 @@ HARSH_BRAKING = 5.0  # m/s²: braking harder than this is harsh (about half of g
 BLOCKED_AHEAD = 25.0  # m of its route ahead of the ego where a body in the way holds it up
 HELD_UP = 0.5  # m/s: a body ahead on the route no faster than the ego plus this holds it up
 BRAKE_WINDOW = 1.0  # s around the hardest braking in which to look for what the ego braked for
+CONTACT_WINDOW = 3.0  # s before a collision in which the ego's own motion must have brought it on
 START_GRACE = 1.0  # s: harsh braking begun before this answers the state the test began in
 
 # The checks that can fail a test, most serious first (the evaluation's table counts them in this order).
@@ -74,8 +78,9 @@ def judge(run: Run, plan: Plan, *, seed: int = 0, fmu: str = "", method: str = "
     }
     failure: str | None = None
     partner: tuple[str | None, float] = (None, float(run.times[-1]))  # who and when, for the violation
+    ttc = _Ttc(run)
     if run.contact is not None:
-        finding, details = _collision(run)
+        finding, details = _collision(run, ttc)
         findings.append(finding)
         facts["collision"] = details
         if not finding.passed:
@@ -90,7 +95,6 @@ def judge(run: Run, plan: Plan, *, seed: int = 0, fmu: str = "", method: str = "
         if not finding.passed:
             failure = "goal"
 
-    ttc = _Ttc(run)
     best, own = _nearest(ttc, run.times, mask=ttc.moving), _nearest(ttc, run.times, mask=ttc.own)
     facts["min_ttc"] = None if best is None else _r(best[0])
     facts["min_own_ttc"] = None if own is None else _r(own[0])
@@ -113,7 +117,7 @@ def judge(run: Run, plan: Plan, *, seed: int = 0, fmu: str = "", method: str = "
     return Verdict("fmu", plan.scenario.name, plan.site, tuple(findings), facts)
 
 
-def _collision(run: Run) -> tuple[Finding, dict[str, object]]:
+def _collision(run: Run, ttc: _Ttc) -> tuple[Finding, dict[str, object]]:
     assert run.contact is not None
     ego, other = run.ego_track, run.tracks[run.contact.other]
     speed = float(ego.speed[-1])
@@ -132,6 +136,10 @@ def _collision(run: Run) -> tuple[Finding, dict[str, object]]:
     if kind == "struck_from_behind":
         message = f"{name} ran into the back of the ego (at {speed:.1f} m/s): not the ego's failure"
         return Finding("collision", True, message, at), details
+    recent = (run.times >= at - CONTACT_WINDOW) & np.isfinite(ttc.driven[name])
+    if not (ttc.own[name] & recent).any():
+        message = f"{name} drove into the ego (at {speed:.1f} m/s), which standing still would have been hit as soon"
+        return Finding("collision", True, message + ": not the ego's failure", at), details
     message = f"the ego, at {speed:.1f} m/s, collided with {name} ({kind.replace('_', ' ')})"
     return Finding("collision", False, message, at), details
 

@@ -23,7 +23,7 @@ VIOLATIONS: dict[str, str] = {
     "pedestrian": "did not slow for a pedestrian",
     "oncoming": "did not avoid an oncoming vehicle on its side of the road",
     "rear_end": "ran up on a slower or stopped vehicle ahead",
-    "cut_in": "moved across into a vehicle going its way (a lane change or merge)",
+    "cut_in": "moved across into a vehicle going its way",
     "stalled": "stood still with its route clear",
     "slow": "too slow to reach its goal in time",
     "phantom_braking": "braked hard with no one on a collision course",

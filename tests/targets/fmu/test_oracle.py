@@ -105,3 +105,42 @@ def test_harsh_braking_begun_at_the_start_answers_the_state_the_test_began_in() 
         assert verdict.facts["peak_braking"] > 30.0
     assert findings["early"].passed and "answering the state the test began in" in findings["early"].message
     assert not findings["late"].passed and findings["late"].time == pytest.approx(1.55, abs=0.06)
+
+
+def _side_run(ego_speed: float, other_start: tuple[float, float], other_heading: float, other_speed: float) -> Run:
+    """V1 (the ego) drives east from x = 50 at ego_speed for 2 s; V2 drives straight from other_start;
+    the run ends at their first contact."""
+    from sovarc.targets.fmu.geometry import corners, overlap
+
+    times = np.arange(STEPS) * 0.05
+    ego_x = 50.0 + ego_speed * times
+    rad = np.radians(other_heading)
+    ox, oy = other_start[0] + other_speed * times * np.sin(rad), other_start[1] + other_speed * times * np.cos(rad)
+    end = next(
+        (
+            k
+            for k in range(STEPS)
+            if overlap(corners(ego_x[k], -8.25, 90.0, CAR), corners(ox[k], oy[k], other_heading, CAR))
+        ),
+        None,
+    )
+    assert end is not None, "the hand-made bodies must meet"
+    n = end + 1
+    tracks = {
+        "V1": Track("V1", CAR, ego_x[:n], np.full(n, -8.25), np.full(n, 90.0), np.full(n, ego_speed)),
+        "V2": Track("V2", CAR, ox[:n], oy[:n], np.full(n, other_heading), np.full(n, other_speed)),
+    }
+    task = make_task(car_following(), "V1")
+    contact = Contact(float(times[end]), "V2")
+    return Run("V1", task, times[:n], tracks, ego_x[:n] - 20.0, np.zeros((n, 2)), "collision", contact, (), 0.0)
+
+
+def test_a_collision_counts_only_when_the_ego_s_motion_brought_it_on() -> None:
+    # V2 comes south at 10 m/s straight at the side of an ego creeping at 1 m/s: standing would not help
+    rammed = judge(_side_run(1.0, (49.0, 5.0), 180.0, 10.0), car_following())
+    assert rammed.passed, rammed.dumps()
+    assert "drove into the ego" in rammed.findings[0].message and rammed.facts["collision"]["kind"] == "angle"
+    # the ego drives at 10 m/s into V2 crossing slowly ahead of it: standing, it would have been passed by
+    crossing = judge(_side_run(10.0, (66.0, -4.0), 180.0, 3.0), car_following())
+    assert not crossing.findings[0].passed and crossing.facts["failure"] == "collision"
+    assert crossing.facts["violation"] == "crossing"
