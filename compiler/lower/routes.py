@@ -126,6 +126,7 @@ def _through_junction(
         # Out of a driveway near the junction: its slow, tight start (which caps the speed of
         # the whole first leg) then leaves the car a short way to go.
         start = max(start, drive.line.length - DRIVEWAY_TO_JUNCTION)
+    start = min(start, max(1.0, drive.line.length - 5.0))  # a short city arm: just before the junction
     _along(drive, actions, before, start=start, side=side)
     if drive.left_road:
         return drive.line.length
