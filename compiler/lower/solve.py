@@ -132,8 +132,24 @@ def solve(problem: Problem) -> Solution:
     return _solve(problem, nice=False, t_max=T_MAX)
 
 
+@dataclass(frozen=True)
+class _Terms:
+    """Makes Z3 terms in one context."""
+
+    ctx: Any
+
+    def real(self, name: str) -> Any:
+        return z3.Real(name, self.ctx)
+
+    def val(self, value: float) -> Any:
+        return z3.RealVal(value, self.ctx)
+
+
 def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
-    solver = z3.Solver()
+    # A fresh context per problem: Z3's choice among models depends on every term its context
+    # has seen, so sharing the global one would make a plan depend on what was solved before.
+    z = _Terms(z3.Context())
+    solver = z3.Solver(ctx=z.ctx)
     solver.set("random_seed", 0)
     solver.set("timeout", 4000)
     tracked: dict[str, Fact] = {}
@@ -142,12 +158,12 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
         fact = problem.facts[label]
         name = f"{label}#{len(tracked)}"
         tracked[name] = fact
-        solver.assert_and_track(constraint, z3.Bool(name))
+        solver.assert_and_track(constraint, z3.Bool(name, z.ctx))
 
-    t_hit = z3.Real("t_hit")
+    t_hit = z.real("t_hit")
     need("impact", z3.And(t_hit >= 2.0, t_max >= t_hit))
-    motions = {pid: _motion(pid, r, problem, need, nice) for pid, r in problem.routes.items()}
-    _contact(problem, motions, t_hit, need, nice)
+    motions = {pid: _motion(pid, r, problem, need, nice, z) for pid, r in problem.routes.items()}
+    _contact(problem, motions, t_hit, need, nice, z)
     result = solver.check()
     if result == z3.unknown:
         raise ConflictError([problem.facts["impact"]])
@@ -157,7 +173,7 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
     return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
 
 
-def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> Motion:
+def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: _Terms) -> Motion:
     role = route.participant.role
     stops = route.stops()
     actions = route.participant.known_actions
@@ -172,7 +188,7 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> 
         stops = stops[:-1]  # a striker's last stop comes after the crash
     positions = []
     for k, stop in enumerate(stops):
-        q = z3.Real(f"{pid}.stop{k}")
+        q = z.real(f"{pid}.stop{k}")
         label = f"{pid}.action{stop.index}"
         if final_stop and k == len(stops) - 1:
             need(label, z3.And(q >= 0.0, q <= route.line.length))
@@ -183,24 +199,24 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> 
         positions.append(q)
     motion = Motion(route, None, None)
     if pid in problem.stationary:
-        q = positions[-1] if positions else z3.Real(f"{pid}.start")
+        q = positions[-1] if positions else z.real(f"{pid}.start")
         need(f"{pid}.route", z3.And(q >= 0.0, q <= route.line.length - 1.0))
         motion.start = q
         motion.stopped_at_impact = True
         motion.impact_s = q
         return motion
-    begin: Any = z3.RealVal(0)
+    begin: Any = z.val(0)
     if route.starts_at_rest:
-        start = positions.pop(0) if positions and stops[0].index == 0 else z3.RealVal(0.0)
+        start = positions.pop(0) if positions and stops[0].index == 0 else z.val(0.0)
         if stops and stops[0].index == 0:
             stops = stops[1:]
-        dwell = z3.Real(f"{pid}.dwell0")
+        dwell = z.real(f"{pid}.dwell0")
         need(f"{pid}.route", dwell >= (NICE_DWELL if nice else DWELL))
         motion.initial_dwell = dwell
         begin = dwell
         from_rest = True
     else:
-        start = z3.Real(f"{pid}.start")
+        start = z.real(f"{pid}.start")
         need(f"{pid}.route", z3.And(start >= 0.0, start <= route.start_hi))
         from_rest = False
     motion.start = start
@@ -210,7 +226,7 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> 
         if final_stop and j == len(bounds) - 1:
             break  # stopped at the crash: no leg after the last stop
         end = bounds[j + 1] if j + 1 < len(bounds) else None
-        v, t = z3.Real(f"{pid}.v{j}"), z3.Real(f"{pid}.t{j}")
+        v, t = z.real(f"{pid}.v{j}"), z.real(f"{pid}.t{j}")
         cap = _leg_cap(route, j, stops, _reach(problem, pid) if end is None else None)
         low = V_MIN[role]
         high = min(vmax, cap)
@@ -224,7 +240,7 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool) -> 
             ramps = (v * v / (2 * A_UP) if from_rest else 0) + v * v / (2 * B_DOWN)
             need(f"{pid}.chain", end - leg_start == v * t - ramps)
             need(f"{pid}.chain", t >= (v / A_UP if from_rest else 0) + v / B_DOWN)
-            dwell = z3.Real(f"{pid}.dwell{j + 1}")
+            dwell = z.real(f"{pid}.dwell{j + 1}")
             need(f"{pid}.chain", dwell >= (NICE_DWELL if nice else DWELL))
             motion.dwells.append(dwell)
             begin = begin + t + dwell
@@ -256,13 +272,13 @@ def _reach(problem: Problem, pid: str) -> float | None:
     return None
 
 
-def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any, nice: bool) -> None:
+def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any, nice: bool, z: _Terms) -> None:
     c = problem.contact
     crash = f"crash.{problem.crash.value}"
     striker, victim = motions[problem.striker], motions[problem.victim]
-    s = z3.Real("contact")
+    s = z.real("contact")
     need(crash, z3.And(s >= c.lo, s <= c.hi))
-    s_v = c.offset + c.sign * s if c.sign else z3.RealVal(c.offset)
+    s_v = c.offset + c.sign * s if c.sign else z.val(c.offset)
     striker.impact_s = s
     _arrive(problem.striker, striker, s, t_hit, need, nice)
     if victim.stopped_at_impact:
