@@ -100,8 +100,8 @@ def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
     README): the rules keep the environment, the road, headings and lanes, and the actions, which they read
     clause by clause in report order (a disagreement is noted; the small model adds actions the report does
     not state and misorders them). The crash is the rules' when a sentence states it ("the front of V1 struck
-    the rear of V2"); else (or for who struck whom after a bare "head-on") the model's, its type
-    cross-checked against the headings.
+    the rear of V2"), its type left unknown when that sentence names no struck part; else (or for who struck
+    whom after a bare "head-on") the model's, its type cross-checked against the headings.
     """
     notes: list[str] = []
     people = []
@@ -113,9 +113,13 @@ def merge(rules: Scenario, answer: Answer) -> tuple[Scenario, list[str]]:
             )
         people.append(p)
     stated = not isinstance(rules.crash.type, Unknown)
-    crash = rules.crash if stated else replace(rules.crash, type=answer.crash.type)
+    # A sentence the rules read for who struck whom that names no struck part leaves the type unstated.
+    unstated = not stated and not isinstance(rules.crash.striker, Unknown)
+    crash = rules.crash if stated or unstated else replace(rules.crash, type=answer.crash.type)
     if stated and rules.crash.type != answer.crash.type:
         notes.append(f"crash: the report states {rules.crash.type}, the model read {answer.crash.type}")
+    if unstated:
+        notes.append(f"crash: the report names no struck part; the model's {answer.crash.type} is not kept")
     if not stated and (fixed := _geometry_check(rules, crash.type)) is not None:
         notes.append(f"crash: the model read {crash.type}, but the headings make it {fixed}; kept {fixed}")
         crash = replace(crash, type=fixed)

@@ -233,3 +233,18 @@ def test_an_endpoint_that_never_answers_times_out_with_a_clear_error() -> None:
         provider = OpenAIProvider("any", base_url=url, timeout_s=1, retries=0)
         with pytest.raises(ProviderError, match=f"the endpoint {url} did not answer in time"):
             provider.complete_json("s", "u", {"type": "object"}, max_tokens=8)
+
+
+def test_a_struck_part_the_report_does_not_name_stays_unknown() -> None:
+    rules = Scenario(
+        "s",
+        participants=(
+            Participant("V1", Role.VEHICLE, actions=(Action(ActionKind.FOLLOW_LANE),)),
+            Participant("V2", Role.VEHICLE, actions=(Action(ActionKind.DRIVE_INTO),)),
+        ),
+        crash=Crash(UNKNOWN, "V2", "V1"),  # "V1 was struck by the front of V2": who, but not where
+    )
+    merged, notes = merge(rules, parse_answer(GOOD, ["V1", "V2"]))
+    assert merged.crash == Crash(UNKNOWN, "V2", "V1")
+    assert "crash: the report names no struck part; the model's side is not kept" in notes
+    assert "V2 actions: the model read [follow_lane], the rules [drive_into]; kept the rules" in notes
