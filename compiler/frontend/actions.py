@@ -110,6 +110,7 @@ _BARE_TURN = re.compile(
     r"(?! (?:to the |to its )?(?:left|right|around|green|red))",
     re.I,
 )
+_AFTER = re.compile(r"\bafter (?:being |having )?\w+(?:ing|ed)\b[^,.;]*", re.I)
 _MEANT_TURN = re.compile(r"\b(?:turn(?:ing)?|make a|making a) (left|right)\b", re.I)
 # On a road with no junction, a vehicle that "entered the roadway" came from off the road.
 _ENTERED_ROAD = re.compile(r"\benter(?:ed|ing|s) the (?:road(?:way)?|street|highway)\b", re.I)
@@ -188,6 +189,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
             found += [(piece.at + m.start(), Action(ActionKind.GO_ACROSS)) for m in _STRAIGHT.finditer(done)]
         if meant is not None:
             found += _bare_turns(piece, done, meant)
+        earlier = [m.span() for m in _AFTER.finditer(done)]
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
                 to: Side | None = None
@@ -198,7 +200,9 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                     to = Side(sides[-1].lower() if m.end() - m.start() > 20 else sides[0].lower())
                 if kind is ActionKind.GO_ACROSS and not at_junction:
                     continue
-                found.append((piece.at + m.start(), Action(kind, to)))
+                # "turning left after being stopped": what the after-clause says came first
+                at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
+                found.append((at, Action(kind, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.

@@ -39,6 +39,13 @@ _ASIDE = re.compile(r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:w
 _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNORECASE)
 # Where a clause about another road user gives way to the subject's again: "stopped for traffic, then turned".
 _CLAUSE_END = re.compile(r",? (?:and )?then\b|;", re.IGNORECASE)
+# A sentence about the place, not about a participant: "The roadway had ...", "It was dark".
+_SCENE = re.compile(
+    r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"
+    r"speed limits?|crash|collision|area|approach(?:es)?|median|shoulder|signal|light|sign)\b"
+    r"|(?:it|there) (?:was|were|is|are)\b|conditions\b",
+    re.IGNORECASE,
+)
 _NAME = re.compile(r"\b[VP]\d\b")
 
 
@@ -94,7 +101,7 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
     others = _met(sents)
     for index, sentence in enumerate(sents):
         events = _events(sentence, ids, others)
-        who, start = carry, 0
+        who, start = (() if _SCENE.match(sentence) else carry), 0
         for at, whom in list(events):
             if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
                 back = next((w for a, w in reversed(events) if a < at and w), carry)

@@ -65,6 +65,19 @@ def test_a_turn_after_before_is_done_unless_before_names_who() -> None:
     assert _actions(meant + "Before V1 began the turn, V2 struck V1.")["V1"] == ["follow_lane"]
 
 
+def test_a_sentence_about_the_road_is_nobodys() -> None:
+    text = (
+        "V1, a 2001 Saab, was traveling west. The roadway had a center lane used for left turns in both "
+        "directions. V1 hit V2."
+    )
+    assert _actions(text)["V1"] == ["follow_lane"]
+
+
+def test_what_an_after_clause_says_came_first() -> None:
+    text = "V1, a 2006 Honda, was making a left turn after being stopped at the stop sign. V2 struck V1."
+    assert _actions(text)["V1"] == ["stop", "turn_left"]
+
+
 def test_a_clause_about_traffic_ends_at_then() -> None:
     text = "At the intersection V1 was traveling east, stopped for traffic, then turned left. V2 hit V1."
     assert _actions(text)["V1"] == ["follow_lane", "stop", "turn_left"]
