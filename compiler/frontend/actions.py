@@ -44,7 +44,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
             r"|\b(?:across|over) the (?:double yellow|cent(?:er|re) ?line)"
-            r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side)\b"
+            r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side|direction)\b"
             r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
             r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
             r"|\bcross(?:ed|ing) (?:over )?(?:the )?(?:\w+ )?lane lines? (?:to|on) the left"

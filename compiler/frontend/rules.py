@@ -133,11 +133,14 @@ def extract_road_kind(text: str) -> RoadKind:
 _COMPASS = r"(north|south|east|west)(?:east|west)?(?: ?bound|ward|erly)?(?![a-z/-])"
 _MOVING_HEADING = re.compile(
     r"\b(?:travel\w*|driv(?:ing|es|e)|drove|head(?:ed|ing)|going|proceed\w*|moving|was|were|continu\w*|approach\w*"
+    r"|walk\w*|runn\w*|jogg\w*|rid(?:ing|e)"
     r"|negotiat\w*|stopped facing|(?:was|were) (?:\w+ )?facing)(?: due| in an?| generally)? " + _COMPASS,
     re.I,
 )
 _FACING = re.compile(r"(?<!rest )(?<!rest, )\bfacing (?:due |generally )?" + _COMPASS, re.I)
-_LANE_HEADING = re.compile(r"\b(?:in|on|within) (?:the|its|his|her) (?:\w+ )?(north|south|east|west) ?bound\b", re.I)
+_LANE_HEADING = re.compile(
+    r"\b(?:in|on|within|from) (?:the|its|his|her) (?:\w+ )?(north|south|east|west) ?bound\b", re.I
+)
 _NOT_HEADING = re.compile(
     r"\b(?:to (?:travel|go|head|proceed|turn)|onto|into|toward|towards)\b[^.,;]*?$"
     r"|\b(?:\d|one|two|three|four|five|both) $",
@@ -267,9 +270,12 @@ def _scene(text: str, people: list[Participant], parked: set[str]) -> list[Parti
 
 
 _PARKED = re.compile(r"\bparked\b", re.IGNORECASE)
+# A pedestrian walking along the road, not across it ("walking northbound in the bike lane").
 _WALKING = re.compile(
-    r"\bwalk(?:ing|ed|s)? (?:along|beside|with traffic|against traffic)\b|\balong the (?:edge|shoulder|side)\b", re.I
+    r"\bwalk(?:ing|ed|s)?\b(?! (?:in)?to the (?:road|street|roadway|path|travel))|\balong the (?:edge|shoulder|side)\b",
+    re.I,
 )
+_CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
@@ -298,7 +304,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         if any(_PARKED.search(p.text) for p in early):
             parked.add(pid)
         if pid.startswith("P"):
-            walking = any(_WALKING.search(p.text) for p in early)
+            walking = any(_WALKING.search(p.text) for p in early) and not any(_CROSSING.search(p.text) for p in early)
             action = Action(ActionKind.WALK if walking else ActionKind.CROSS)
             people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, _speed(early), (action,)))
             if not walking and crash.victim == pid and isinstance(crash.type, Unknown):

@@ -130,6 +130,10 @@ def test_an_object_described_on_the_spot_is_its_description() -> None:
             ["follow_lane", "retrograde"],
         ),
         ("V1 was eastbound and drove across the double yellow line. V1 hit V2.", ["follow_lane", "retrograde"]),
+        (
+            "V1, a 2002 Ford, was eastbound (the wrong direction) on the one-way street. V1 hit V2.",
+            ["follow_lane", "retrograde"],
+        ),
         # from a parked position onto the road
         ("V1 was parked at the curb and pulled out into the travel lane. V2 struck V1.", ["stop", "drive_into"]),
         # a left-turn lane is a lane, not a turn
@@ -204,6 +208,13 @@ def test_a_pedestrian_crossing_is_struck_from_the_side() -> None:
     assert (s.crash.type, s.participant("P1").known_actions[0].kind) == (CrashType.SIDE, "cross")
     walking = _reading("V1 was eastbound. P1 was walking along the edge of the road. The front of V1 struck P1.")
     assert walking.participant("P1").known_actions[0].kind == "walk"
+    along = _reading(
+        "V1 was northbound. P1 was walking northbound in the bike lane. The front of V1 hit the back of P1."
+    )
+    assert (along.participant("P1").known_actions[0].kind, along.participant("P1").heading) == ("walk", "north")
+    assert along.crash.type == CrashType.REAR_END
+    into = _reading("V1 was southbound when P1 walked into the roadway. The front of V1 struck P1.")
+    assert into.participant("P1").known_actions[0].kind == "cross"
 
 
 # --- headings and lanes -------------------------------------------------------------------------
