@@ -17,7 +17,7 @@ from sovarc.dsl.ir import Crash, CrashType
 _V = r"(?:[VP]\d)"
 _WORD = (
     r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumper|corner|plane|door|fender|wheel|"
-    r"quarter|panel|drivers?'?s?|passenger'?s?)"
+    r"quarter|panel|drivers?'?s?|passenger'?s?|area|portion|section|part)"
 )
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
 _STRIKE = (
@@ -57,7 +57,9 @@ _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 def _kind(part: str) -> CrashType | None:
     words = set(re.split(r"[- ]", part.lower()))
-    if words & {"side", "door", "panel", "fender", "quarter"} or ("plane" in words and "frontal" not in words):
+    if words & {"side", "door", "panel", "fender", "quarter"} or (
+        "plane" in words and not words & {"front", "frontal"}
+    ):
         return CrashType.SIDE
     if words & {"rear", "back"} or ("end" in words and "front" not in words):
         return CrashType.REAR_END
@@ -89,14 +91,16 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
 def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, CrashType]]) -> str | None:
     if agent := _AGENT.search(sentence) or _AGENT_OWNED.search(sentence):
         return agent.group("v")
+    fronts = [who for _, who, kind in parts if kind is CrashType.FRONTAL]
+    others = {who for _, who, kind in parts if kind is not CrashType.FRONTAL}
+    if len(set(fronts)) == 1 and others and fronts[0] not in others:  # a front met the other's side or rear
+        return fronts[0]
     for m in _ACTIVE.finditer(sentence):  # the subject of an active strike: the last one named before it
         named = [n for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)]
         if named and not _PASSIVE.search(sentence, max(0, m.start() - 12), m.end()):
             return named[-1].group()
     if _PRONOUN_ACTIVE.search(sentence) and subject is not None:
         return subject
-    fronts = [who for _, who, kind in parts if kind is CrashType.FRONTAL]
-    others = {who for _, who, kind in parts if kind is not CrashType.FRONTAL}
     if front := next((w for w in fronts if w not in others), None):
         return front
     # "his vehicle ... before contacting the right rear corner of V2": the sentence's subject struck

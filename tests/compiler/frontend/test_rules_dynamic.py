@@ -186,6 +186,8 @@ def test_what_follows_the_impact_is_not_an_action() -> None:
         ),
         ("V1 passed V2 on the left, contacting its front to the left side of V2.", (CrashType.SIDE, "V1", "V2")),
         ("V1 and V2 collided head-on.", (CrashType.FRONTAL, UNKNOWN, UNKNOWN)),
+        ("V1's right plane made contact with V2's front plane.", (CrashType.SIDE, "V2", "V1")),
+        ("The front of V2 struck the right rear area of V1.", (CrashType.REAR_END, "V2", "V1")),
         ("V1 ran off the road and struck a tree with its front.", (CrashType.FRONTAL, "V1", UNKNOWN)),
         ("The front of V1 struck P1 from behind.", (CrashType.REAR_END, "V1", "P1")),
     ],
