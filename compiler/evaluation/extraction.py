@@ -3,7 +3,11 @@
 Both sides are scenario IR: the ground truth is imported with
 `frontend.truth`, so the scoring compares facts, not spellings. Weather and
 lighting compare as sets, everything else exactly; a case's action sequence
-is right only if every vehicle's whole sequence is.
+is right only if every vehicle's whole sequence is, in order (a vehicle the
+truth leaves `unknown` must be `unknown`). As in the paper, an attribute is
+scored per report, and DrivingActions is the sequence of behaviours: a
+turn's or lane change's target lane (`turn_left(to: 2)`) is not compared,
+since lanes are what RunningLanes measures.
 """
 
 from __future__ import annotations
