@@ -136,6 +136,10 @@ class Drive:
     def _blend(self, index: int, at: float, target: Polyline) -> float:
         end = at + change_length(self.speed)
         end = min(end, self.line.length - 5.0)
+        if end - at < 2.0:
+            raise LoweringError(
+                Diagnostic(f"action {index + 1}: {self.line.length:.0f} m of road leave no room to move across")
+            )
         if end - at < 8.0:
             self.notes.append(f"action {index + 1}: squeezed into {end - at:.0f} m of road")
         self.line = blend(self.line, target, at, end)
