@@ -169,7 +169,9 @@ def _heading(pieces: list[Piece], after_impact: bool = False) -> Heading | Unkno
 
 
 def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
-    if m := re.search(r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b|\bnumber " + _NUMBER + r" lane", text, re.I):
+    if m := re.search(
+        r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b(?![-/])|\bnumber " + _NUMBER + r" lane", text, re.I
+    ):
         return _number(m.group(1) or m.group(2))
     if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
         return _ORDINAL[m.group(1).lower()]
@@ -193,8 +195,10 @@ _ONE_LANE_ROAD = re.compile(
 
 
 def _lane_of(pieces: list[Piece], lanes: int | Unknown) -> int | Unknown:
+    """The lane a vehicle started in: not one it turned into, nor one it came to rest in after the impact."""
     for piece in pieces:
         text = re.sub(r"\b(?:turn|turned|turning) (?:\w+ ){0,3}into (?:the )?[^.,;]*", " ", piece.text)
+        text = re.sub(r"[^.,;]*\b(?:rest|pushed|spun|rotated)\b[^.,;]*", " ", text)
         if not isinstance(lane := _lane(text, lanes), Unknown):
             return lane
     return UNKNOWN

@@ -264,6 +264,13 @@ def test_the_scene_gives_heading_and_lane_to_vehicles_that_state_none() -> None:
     assert s.crash == Crash(CrashType.REAR_END, "V2", "V1")
 
 
+def test_a_lane_it_came_to_rest_in_or_a_road_count_is_not_its_lane() -> None:
+    rest = _reading("V1, a 2001 Audi, was westbound. V2 struck V1. V1 rotated and came to rest in lane two.")
+    assert rest.participant("V1").lane == UNKNOWN
+    road = _reading("V1 turned from a driveway onto a northbound 5-lane two-way roadway. V2 struck V1.")
+    assert road.participant("V1").lane == UNKNOWN
+
+
 def test_lane_numbers_in_their_forms() -> None:
     for phrase, lane in [("lane #2", 2), ("the number one lane", 1), ("the second travel lane", 2)]:
         assert _reading(f"V1 was traveling east in {phrase}. V2 struck V1.").participant("V1").lane == lane
