@@ -286,8 +286,10 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
     named = prepare(text)
     sents = sentences(named)
-    ids = participants(named)
     impact = first_impact(sents)
+    # A pedestrian first named after the first impact was met in a later one, which the IR does not hold.
+    seen = " ".join(sents[: impact + 1]) if impact >= 0 else named
+    ids = [pid for pid in participants(named) if pid.startswith("V") or re.search(rf"\b{pid}\b", seen)]
     parts = pieces(sents, ids)
     mine = by_participant(parts, ids)
     lanes = extract_lanes(named)

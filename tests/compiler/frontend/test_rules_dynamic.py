@@ -161,6 +161,11 @@ def test_a_vehicle_never_described_before_the_impact_has_unknown_actions() -> No
     assert (v2.actions, v2.heading, v2.lane) == (UNKNOWN, UNKNOWN, UNKNOWN)
 
 
+def test_a_pedestrian_met_only_after_the_first_impact_is_no_participant() -> None:
+    s = _reading("V1 was northbound. The front of V1 struck the side of V2. V1 then struck a pedestrian on the curb.")
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+
+
 def test_what_follows_the_impact_is_not_an_action() -> None:
     text = "V1 was northbound. The front of V1 struck the rear of V2. V1 then turned right and stopped."
     assert _actions(text)["V1"] == ["follow_lane"]
