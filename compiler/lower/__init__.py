@@ -10,9 +10,10 @@ and victim can meet (contact.py), and solve starts, stops, speeds and the impact
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from sovarc.compiler.lower.assume import assume
+from sovarc.compiler.lower.assume import COMPASS, assume
 from sovarc.compiler.lower.contact import Contact, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
@@ -73,11 +74,13 @@ def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: lis
     raise first
 
 
-def _rotations(scenario: Scenario, match: SiteMatch) -> list[SiteMatch]:
+def _rotations(scenario: Scenario, match: SiteMatch) -> Iterator[SiteMatch]:
     """The chosen rotation of the site, then its other fitting rotations: a crash the first
-    cannot stage (a car that drives on put on a T's stem) may fit another."""
+    cannot stage (a car that drives on put on a T's stem) may fit another. The others are
+    found only when the first fails."""
+    yield match
     others = site_rotations(match.site, scenario_needs(scenario), clamp=True)
-    return [match] + [m for m in others if m.rotation != match.rotation]
+    yield from (m for m in others if m.rotation != match.rotation)
 
 
 def _lower_rotated(
@@ -284,7 +287,7 @@ def _final_heading(p: Participant) -> int | None:
     """The compass quarter (0 north .. 3 west) a participant leaves the junction on."""
     if not isinstance(p.heading, Heading):
         return None
-    quarter = ("north", "east", "south", "west").index(p.heading.value)
+    quarter = COMPASS.index(p.heading)
     for action in p.known_actions:
         quarter += {ActionKind.TURN_RIGHT: 1, ActionKind.TURN_LEFT: -1, ActionKind.U_TURN: 2}.get(action.kind, 0)
     return quarter % 4

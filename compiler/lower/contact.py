@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from sovarc.compiler.lower.route import Route
+from sovarc.compiler.maps.geometry import angle_diff
 from sovarc.dsl.ir import CrashType
 
 STEP = 0.5  # m between the points compared
@@ -91,8 +92,9 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         offset = float(np.median(offsets)) + k
         found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
         close[lo : hi + 1] = False
-        meets = (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi)) if same else ()
-        if not same:
+        if same:
+            meets = (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi))
+        else:
             meets = (_swerve_into(a, ha, hb, d, nearest, lo),)
         for meet in meets:
             if meet is not None:
@@ -157,7 +159,8 @@ def _swerve_into(
 
 
 def _turn(a: float, b: float) -> float:
-    return float(abs((a - b + 180.0) % 360.0 - 180.0))
+    """Degrees between two compass headings, 0..180."""
+    return abs(angle_diff(float(a), float(b)))
 
 
 def _samples(points: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -9,6 +9,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
+from sovarc.compiler.maps.geometry import angle_diff
 
 Point = tuple[float, float]
 
@@ -57,14 +58,11 @@ class Polyline:
         at = np.linspace(0.0, self.length, count)
         return np.column_stack((np.interp(at, self.s, self.points[:, 0]), np.interp(at, self.s, self.points[:, 1])))
 
-    def smoothed(self, window: float = 6.0) -> Polyline:
-        """Resampled every metre and averaged over `window` metres: kinks where two lane shapes
-        meet are rounded off, curves wider than the window keep their shape. Ends stay put."""
-        return self.smoothing(window)[0]
-
     def smoothing(self, window: float = 6.0) -> tuple[Polyline, np.ndarray]:
-        """The smoothed line and, for each of its points, the arc length on this line it comes
-        from: np.interp(s, from_s, smooth.s) carries an arc length over (curves get shorter)."""
+        """The line resampled every metre and averaged over `window` metres (kinks where two lane
+        shapes meet are rounded off, curves wider than the window keep their shape, ends stay
+        put), and for each of its points the arc length on this line it comes from:
+        np.interp(s, from_s, smooth.s) carries an arc length over (curves get shorter)."""
         points = self.resample(1.0)
         half = int(window // 2)
         if len(points) <= 2 * half + 1:
@@ -102,7 +100,7 @@ class Polyline:
             a, b = max(0.0, s - window / 2), min(self.length, s + window / 2)
             if b - a < 1.0:
                 continue
-            turn = abs(_angle_diff(self.heading(b - 1e-6), self.heading(a)))
+            turn = abs(angle_diff(self.heading(b - 1e-6), self.heading(a)))
             if turn > 1e-3:
                 radii[k] = (b - a) / math.radians(turn)
         return radii
@@ -156,11 +154,6 @@ def unit(heading: float) -> Point:
     """The unit vector of a compass heading."""
     rad = math.radians(heading)
     return (math.sin(rad), math.cos(rad))
-
-
-def _angle_diff(a: float, b: float) -> float:
-    d = (a - b) % 360.0
-    return d - 360.0 if d > 180.0 else d
 
 
 def _vertex_normals(points: np.ndarray) -> np.ndarray:

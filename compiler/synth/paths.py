@@ -1,13 +1,14 @@
 """Drivable paths through a route's waypoints, with OMPL's Dubins state space.
 
-Waypoints (x, y, heading) are taken along the route every WAYPOINT_STEP metres. Between two
-waypoints the path is the shortest Dubins curve (forward driving). Its turning radius is
-just under the route's own radius of curvature there: a Dubins curve turns at its radius,
-so a smaller one would make wiggles tighter than the road.
-Each curve is checked against the route's corridor (the front bumper stays within half a
-lane of the route's line, a SpaceInformation validity checker); a curve that leaves it
-(a turn tighter than the radius) is replaced by the straight chord between its waypoints,
-which the dense waypoints keep close to the route. Pedestrians walk the route's line itself.
+Waypoints (x, y, heading) are taken along the route's line (a vehicle's is smoothed once, in
+lowering) every WAYPOINT_STEP metres. Between two waypoints the path is the shortest Dubins
+curve (forward driving). Its turning radius is just under the route's own radius of curvature
+there: a Dubins curve turns at its radius, so a smaller one would make wiggles tighter than
+the road. Each curve is checked against the route's corridor (the front bumper stays within
+CORRIDOR of the route's line, a SpaceInformation validity checker); where it leaves it, tighter
+radius classes are tried that must hug the line (TIGHT_CORRIDOR), and only when none fits is
+the piece the straight chord between its waypoints, whose kink TOPP-RA will likely reject.
+Pedestrians walk the route's line itself.
 """
 
 from __future__ import annotations

@@ -41,7 +41,6 @@ NEAR_SLACK = 1e-3  # m: points this close to the nearest distance are part of th
 OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap (players detect the crash)
 
 # Relative heading (degrees, 0..180) allowed per crash type, and the victim faces it names.
-ANGLES = CRASH_ANGLES
 VICTIM_FACES: dict[str, frozenset[str]] = {
     "rear_end": frozenset({"rear"}),
     "frontal": frozenset({"front"}),
@@ -169,10 +168,10 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     s_pose, v_pose = scene.pose(crash.striker, touch), scene.pose(crash.victim, touch)
     relative = abs(math.degrees(angle_diff(s_pose.h, v_pose.h)))
     facts["relative_heading"] = round(relative, 1)
-    if crash.type not in ANGLES:
+    if crash.type not in CRASH_ANGLES:
         yield Finding("impact_angle", False, f"unknown crash type {crash.type!r}")
         return
-    lo, hi = ANGLES[crash.type]
+    lo, hi = CRASH_ANGLES[crash.type]
     if lo <= relative <= hi:
         message = f"{relative:.0f}° between the headings fits a {crash.type} crash"
         yield Finding("impact_angle", True, message, touch)
