@@ -33,6 +33,7 @@ from sovarc.compiler.synth import synthesize
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import RoadKind, Scenario
+from timing import percentile
 
 ROOT = Path(__file__).resolve().parent.parent
 TRUTH = ROOT.parent / "shared" / "data" / "nmvccs" / "truth"
@@ -110,11 +111,6 @@ def _stage(map_name: str, road_map: RoadMap, name: str, scenario: Scenario, seed
     return runs, search
 
 
-def _pct(values: list[float], q: float) -> float:
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))] if ordered else float("nan")
-
-
 def _rate(runs: list[Run]) -> str:
     good = sum(r.ok for r in runs)
     return f"{good}/{len(runs)} ({100.0 * good / len(runs):.1f}%)" if runs else "-"
@@ -170,7 +166,7 @@ def _summary(runs: list[Run], searches: dict[str, list[float]], facts: dict[str,
         "failures": Counter(f"{r.map}: {r.reason}" for r in runs if not r.ok).most_common(),
         "crashes": sorted({f"{r.map}: {r.scenario} on {r.site}" for r in runs if (r.reason or "").startswith("CRASH")}),
         "time_median_s": statistics.median(timed) if timed else None,
-        "time_p90_s": _pct(timed, 0.9),
+        "time_p90_s": percentile(timed, 0.9),
         "by_participants": {},
     }
     for map_name, info in facts.items():
@@ -182,7 +178,7 @@ def _summary(runs: list[Run], searches: dict[str, list[float]], facts: dict[str,
             "success": _rate(mine),
             "per_kind": {k: _rate([r for r in mine if r.kind == k]) for k in sorted({r.kind for r in mine})},
             "median_s": statistics.median(seconds) if seconds else None,
-            "p90_s": _pct(seconds, 0.9),
+            "p90_s": percentile(seconds, 0.9),
             "search_median_s": statistics.median(warm),
             "search_max_s": max(warm),
         }
@@ -193,7 +189,7 @@ def _summary(runs: list[Run], searches: dict[str, list[float]], facts: dict[str,
                 out["by_participants"][f"{count} on {map_name}"] = {
                     "runs": len(seconds),
                     "median_s": statistics.median(seconds),
-                    "p90_s": _pct(seconds, 0.9),
+                    "p90_s": percentile(seconds, 0.9),
                 }
     return out
 

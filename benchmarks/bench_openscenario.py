@@ -23,7 +23,6 @@ import sys
 import tempfile
 import time
 from collections import Counter, defaultdict
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -38,6 +37,7 @@ from sovarc.targets.openscenario.provenance import Options  # noqa: E402
 from sovarc.targets.openscenario.roadnet import write_road_network  # noqa: E402
 from sovarc.targets.openscenario.versions import dialect  # noqa: E402
 from sovarc.targets.verdict import Verdict  # noqa: E402
+from timing import median_ms  # noqa: E402
 
 from tests.targets.openscenario.plans import CASES, make_plan, straight  # noqa: E402
 
@@ -253,15 +253,6 @@ def long_t_bone(t_hit: float = 60.0) -> Plan:
     return make_plan("intersection_red_light_runner_side", "junction:x_main", t_hit, point, motions)
 
 
-def _median_ms(fn: Callable[[], Any], repeat: int) -> float:
-    samples = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        samples.append(time.perf_counter() - start)
-    return statistics.median(samples) * 1e3
-
-
 def hand_made(args: argparse.Namespace) -> None:
     plans = {name: make() for name, make in CASES.items()} | {"long_t_bone": long_t_bone()}
     d = dialect(args.version)
@@ -281,10 +272,10 @@ def hand_made(args: argparse.Namespace) -> None:
         for name, plan in plans.items():
             options = Options(d.version, choose_ego(plan))
             folder = out / name
-            document = _median_ms(lambda p=plan, o=options: build_document(p, "town.xodr", o, d), args.repeat)
+            document = median_ms(lambda p=plan, o=options: build_document(p, "town.xodr", o, d), args.repeat)
             emitted = emit_files(plan, folder, d.version)
-            emit = _median_ms(lambda p=plan, f=folder: emit_files(p, f, d.version), args.repeat)
-            checking = _median_ms(lambda x=emitted.xosc, p=plan: check(x, p), args.repeat)
+            emit = median_ms(lambda p=plan, f=folder: emit_files(p, f, d.version), args.repeat)
+            checking = median_ms(lambda x=emitted.xosc, p=plan: check(x, p), args.repeat)
             verdict = check(emitted.xosc, plan)
             vertices = sum(len(t.samples) for t in plan.trajectories)
             size = emitted.xosc.stat().st_size / 1024

@@ -8,16 +8,14 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import statistics
-import time
 from collections import Counter
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.maps import find_sites, load_map, match_sites
 from sovarc.dsl import parse
 from sovarc.dsl.errors import LoweringError
+from timing import median_ms
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -29,15 +27,6 @@ def _maps() -> dict[str, Path]:
         "town": ROOT / "examples" / "maps" / "town.net.xml",
         "DRT osm": Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml",
     }
-
-
-def _median_ms(fn: Callable[[], Any], repeat: int) -> float:
-    samples = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        samples.append(time.perf_counter() - start)
-    return statistics.median(samples) * 1e3
 
 
 def _match_all(scenarios: list[Any], road_map: Any, n: int) -> int:
@@ -59,11 +48,11 @@ def main() -> None:
     print(f"{header[0]:<8} {header[1]:>9} {header[2]:>6} {header[3]:>13} {header[4]:>11} {header[5]:>9}", end="")
     print(f" {header[6] + ' ms':>8} {header[7] + ' ms':>8} {header[8] + ' ms':>9}  fitted")
     for name, path in _maps().items():
-        load_ms = _median_ms(lambda path=path: load_map(path), args.repeat)
+        load_ms = median_ms(lambda path=path: load_map(path), args.repeat)
         road_map = load_map(path)
-        find_ms = _median_ms(lambda m=road_map: (m.cache.clear(), find_sites(m)), args.repeat)
+        find_ms = median_ms(lambda m=road_map: (m.cache.clear(), find_sites(m)), args.repeat)
         counts = Counter(site.kind.value for site in find_sites(road_map))
-        match_ms = _median_ms(lambda m=road_map: _match_all(scenarios, m, args.n), args.repeat)
+        match_ms = median_ms(lambda m=road_map: _match_all(scenarios, m, args.n), args.repeat)
         fitted = _match_all(scenarios, road_map, args.n)
         nodes = road_map.net.getNodes()
         junctions = sum(1 for node in nodes if node.getType() != "internal")
