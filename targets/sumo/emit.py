@@ -1,7 +1,8 @@
 """Write a plan as a self-contained SUMO scenario folder that plain `sumo -c` replays.
 
     out_dir/
-      <map>.net.xml      the road network (an OpenDRIVE map is converted by netconvert)
+      <map>.net.xml      the road network (an OpenDRIVE map is converted by netconvert); a big
+                         map is cropped to the roads around the trajectories (crop.py)
       scenario.add.xml   a vType per participant, of its real size; each vehicle's route;
                          a POI on the collision area with weather, lighting and crash facts
       scenario.fcd.xml   the trajectories, one <timestep> per plan step
@@ -26,13 +27,13 @@ from __future__ import annotations
 import hashlib
 import os
 import re
-import shutil
 from pathlib import Path
 
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.errors import Diagnostic, InputError, UnsupportedError
 from sovarc.dsl.span import Span
 from sovarc.targets.sumo import documents
+from sovarc.targets.sumo.crop import Box, crop, needs_crop
 from sovarc.targets.sumo.network import Network, Spot, read_network
 
 _NETCONVERT_HEADER = re.compile(rb"<!--\s*generated on.*?-->\s*", re.DOTALL)
@@ -82,18 +83,20 @@ def copy_network(plan: Plan, out: Path) -> Path:
     name = source.name
     if name.lower().endswith(".net.xml"):
         target = out / name
-        if not target.exists() or target.read_bytes() != data:
-            shutil.copyfile(source, target)
-        return target
-    if name.lower().endswith(".xodr"):
+    elif name.lower().endswith(".xodr"):
         from sovarc.compiler.maps.netconvert import convert_opendrive
 
         target = out / (name[: -len(".xodr")] + ".net.xml")
         convert_opendrive(source, target)
         # netconvert's header names the date and the temp paths: drop it for byte-stable output
-        target.write_bytes(_NETCONVERT_HEADER.sub(b"", target.read_bytes(), count=1))
-        return target
-    raise InputError(Diagnostic("the SUMO target needs a .net.xml or .xodr map", Span.whole_file(plan.map)))
+        data = _NETCONVERT_HEADER.sub(b"", target.read_bytes(), count=1)
+    else:
+        raise InputError(Diagnostic("the SUMO target needs a .net.xml or .xodr map", Span.whole_file(plan.map)))
+    if needs_crop(data):
+        data = crop(data, Box.around([(s.x, s.y) for t in plan.trajectories for s in t.samples]))
+    if not target.exists() or target.read_bytes() != data:
+        target.write_bytes(data)
+    return target
 
 
 def track(plan: Plan, participant: str, network: Network) -> list[Spot]:
