@@ -138,6 +138,9 @@ def _heading(p: Participant, known: _Known) -> Participant:
             if _turns_back(p) != _turns_back(partner):
                 turn = 2 - turn
             reason = f"{'opposite' if turn == 2 else 'same'} as {partner.id}, for a {crash.value} crash"
+            if crash is CrashType.SIDE and _wrong_way(partner) and not _wrong_way(p):
+                # a wrong-way driver side-swipes a car in the lane it swerves into: an oncoming one
+                turn, reason = 2, f"opposite to {partner.id}, whose wrong-way drive swerves into its lane"
         heading = COMPASS[(base + turn) % 4]
     known.notes.append(f"{p.id} heading unknown: planned {heading.value} ({reason})")
     return replace(p, heading=heading)
@@ -157,12 +160,26 @@ def _lane(p: Participant, known: _Known) -> Participant:
             lane, reason = other + 1, f" (left of {partner.id}: its right turn cuts across {partner.id}'s lane)"
         elif known.crash is CrashType.SIDE and _cuts_across(partner, p) is Side.LEFT:
             lane, reason = other + 1, f" (left of {partner.id}, whose left turn cuts across it)"
+        elif known.crash is CrashType.SIDE and _same_turn(p, partner):
+            lane, reason = other + 1, f" (beside {partner.id}, turning the same way: side by side in two turn lanes)"
     known.notes.append(f"{p.id} lane unknown: planned in lane {lane}{reason}")
     return replace(p, lane=lane)
 
 
 def _changes_lane(*people: Participant) -> bool:
     return any(a.kind is ActionKind.CHANGE_LANE for p in people for a in p.known_actions)
+
+
+def _wrong_way(p: Participant) -> bool:
+    return any(a.kind is ActionKind.RETROGRADE for a in p.known_actions)
+
+
+def _same_turn(p: Participant, partner: Participant) -> bool:
+    """Both turn, and their first turns go the same way."""
+    turns = {ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT}
+    mine = [a.kind for a in p.known_actions if a.kind in turns]
+    theirs = [a.kind for a in partner.known_actions if a.kind in turns]
+    return bool(mine and theirs) and mine[0] is theirs[0]
 
 
 def _cuts_across(p: Participant, partner: Participant) -> Side | None:

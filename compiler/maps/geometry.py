@@ -45,6 +45,17 @@ def point_at(shape: Sequence[Point], s: float) -> Point:
     return shape[-1]
 
 
+def distance_to(shape: Sequence[Point], p: Point) -> float:
+    """The shortest distance from `p` to the polyline."""
+    best = math.inf
+    for a, b in itertools.pairwise(shape):
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        span = dx * dx + dy * dy
+        t = 0.0 if span == 0.0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / span))
+        best = min(best, math.dist(p, (a[0] + t * dx, a[1] + t * dy)))
+    return best
+
+
 def heading_between(p: Point, q: Point) -> float:
     return compass(q[0] - p[0], q[1] - p[1])
 

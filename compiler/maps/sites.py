@@ -25,6 +25,7 @@ from sovarc.compiler.maps.geometry import (
     Point,
     Shape,
     angle_diff,
+    distance_to,
     end_heading,
     fit_frame,
     heading_between,
@@ -47,6 +48,10 @@ PAIR_TOLERANCE = 40.0  # an incoming and an outgoing edge this close in directio
 # is at most L^2 / 8R, about 3 m over 100 m) and has no kink sharper than STRAIGHT_KINK degrees.
 STRAIGHT_RADIUS = 400.0
 STRAIGHT_KINK = 15.0
+# Inner lane edges of the two directions further apart than this: a divided road. Its halves
+# are staged as one-way roads, because a median (often with paths or rails on it) is no lane
+# line a wrong-way or overtaking car can cross.
+MEDIAN_MAX = 1.0  # m
 
 
 @dataclass(frozen=True)
@@ -273,14 +278,24 @@ def _straight_sites(net: Any, min_length: float) -> list[Site]:
             continue
         used.add(edge.getID())
         reverse = _reverse_of(edge, used, lanes)
-        directions = [edge] if reverse is None else [edge, reverse]
         if reverse is not None:
             used.add(reverse.getID())
-        elif len(lanes(edge)) < 2:
-            continue  # a one-way single lane is not a road to stage a crash on
-        if all(_is_straight(lanes(e), min_length) for e in directions):
-            sites.append(_straight_site(directions, lanes))
+            if _median(lanes(edge), lanes(reverse)) <= MEDIAN_MAX:
+                if all(_is_straight(lanes(e), min_length) for e in (edge, reverse)):
+                    sites.append(_straight_site([edge, reverse], lanes))
+                continue
+        for one_way in (edge, reverse):
+            # a one-way single lane is not a road to stage a crash on
+            if one_way is not None and len(lanes(one_way)) >= 2 and _is_straight(lanes(one_way), min_length):
+                sites.append(_straight_site([one_way], lanes))
     return sites
+
+
+def _median(there: tuple[LaneInfo, ...], back: tuple[LaneInfo, ...]) -> float:
+    """The gap between the two directions' inner (left-most) car lanes, at the middle of the road."""
+    inner, other = there[-1], back[-1]
+    middle = point_at(inner.shape, shape_length(inner.shape) / 2.0)
+    return distance_to(other.shape, middle) - (inner.width + other.width) / 2.0
 
 
 def _reverse_of(edge: Any, used: set[str], lanes: _Lanes) -> Any | None:

@@ -111,3 +111,38 @@ def test_a_pedestrian_without_actions_crosses_and_keeps_its_unknown_heading() ->
     assert [a.kind for a in v2.known_actions] == [ActionKind.CROSS]
     assert isinstance(v2.heading, Unknown)  # a pedestrian is laid against its vehicle, not on a heading
     assert "V2 actions unknown: planned as cross" in notes
+
+
+def test_two_cars_turning_the_same_way_into_a_side_crash_turn_side_by_side() -> None:
+    text = (
+        UNKNOWNS.replace("type unknown", "type side")
+        .replace("striker unknown", "striker V2")
+        .replace("heading unknown", "heading north")
+        .replace("lane 2", "lane 1")
+        .replace("actions unknown", "actions {\n      turn_left\n    }")
+    )
+    filled, notes = assume(parse(text))
+    v2 = filled.participant("V2")
+    assert v2 is not None and v2.lane == 2  # beside V1, not behind it in its lane
+    assert (
+        "V2 lane unknown: planned in lane 2 (beside V1, turning the same way: side by side in two turn lanes)" in notes
+    )
+    right = assume(parse(text.replace("turn_left", "turn_right")))[0].participant("V2")
+    assert right is not None and right.lane == 2
+
+
+def test_a_wrong_way_striker_side_swipes_an_oncoming_car() -> None:
+    text = (
+        UNKNOWNS.replace("kind intersection", "kind straight")
+        .replace("type unknown", "type side")
+        .replace("striker unknown", "striker V1")
+        .replace("victim V1", "victim V2")
+        .replace("turn_left", "retrograde")
+        .replace("actions unknown", "actions {\n      stop\n    }")
+    )
+    filled, notes = assume(parse(text))
+    v2 = filled.participant("V2")
+    assert v2 is not None and v2.heading is Heading.SOUTH
+    assert "V2 heading unknown: planned south (opposite to V1, whose wrong-way drive swerves into its lane)" in notes
+    keeps = assume(parse(text.replace("retrograde", "follow_lane")))[0].participant("V2")
+    assert keeps is not None and keeps.heading is Heading.NORTH  # no wrong-way drive: same way, as before

@@ -6,6 +6,7 @@ import pytest
 from sovarc.compiler.maps.geometry import (
     angle_diff,
     compass,
+    distance_to,
     end_heading,
     fit_frame,
     max_kink,
@@ -74,3 +75,10 @@ def test_a_skewed_four_way_has_a_large_error() -> None:
 def test_more_than_four_arms_is_refused() -> None:
     with pytest.raises(ValueError, match="1 to 4 arms"):
         fit_frame([0.0, 72.0, 144.0, 216.0, 288.0])
+
+
+def test_distance_to_a_polyline_is_to_its_nearest_segment_or_end() -> None:
+    line = [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)]
+    assert distance_to(line, (5.0, 3.0)) == pytest.approx(3.0)  # above the first segment
+    assert distance_to(line, (13.0, 5.0)) == pytest.approx(3.0)  # beside the second
+    assert distance_to(line, (-3.0, -4.0)) == pytest.approx(5.0)  # past the start: to the end point

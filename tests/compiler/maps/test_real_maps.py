@@ -16,7 +16,7 @@ X, T, S = RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT
 
 # What each OpenDRIVE file holds, as converted by netconvert.
 OPENDRIVE_SITES = {
-    "e6mini": {S: 1},  # a 1.4 km gently curved four-lane motorway
+    "e6mini": {S: 2},  # a 1.4 km gently curved motorway, four lanes each way: a 5 m median makes two one-way sites
     "fabriksgatan": {X: 1, S: 3},  # one crossing; one of its arms is 17 m long, too short for a straight site
     "jolengatan": {S: 1},  # an 800 m curving street, single lanes
     "multi_intersections": {X: 2, T: 3, S: 15},
@@ -31,8 +31,8 @@ def test_opendrive_sites(opendrive: dict[str, RoadMap]) -> None:
 
 
 def test_opendrive_lane_widths_survive_conversion(opendrive: dict[str, RoadMap]) -> None:
-    (motorway,) = find_sites(opendrive["e6mini"])
-    assert motorway.lanes == 4
+    motorway = find_sites(opendrive["e6mini"])[1]
+    assert motorway.id == "road:0" and motorway.lanes == 4
     widths = [lane.width for lane in motorway.arms[0].incoming]
     assert widths == pytest.approx([2.85, 3.9, 3.5, 3.65])  # right-most first, as the file gives them
     (straight,) = find_sites(opendrive["straight_500m"])
@@ -51,7 +51,16 @@ def test_opendrive_junction_arms_form_a_cross(opendrive: dict[str, RoadMap]) -> 
 def test_osm_city_site_counts(osm: RoadMap) -> None:
     # regression figures for the DRT network shipped with eclipse-sumo 1.x
     counts = Counter(s.kind for s in find_sites(osm))
-    assert counts == {X: 21, T: 63, S: 64}
+    assert counts == {X: 21, T: 63, S: 65}
+
+
+def test_a_divided_road_is_staged_one_way_at_a_time(osm: RoadMap) -> None:
+    # Ernst-Ruska-Ufer: a 12 m median, with other ways on it, between the two directions
+    ids = {s.id for s in find_sites(osm, S)}
+    assert "road:320741894#0" in ids
+    assert not any("320741894#0" in i and "320741895#0" in i for i in ids)
+    paired = [s for s in find_sites(osm, S) if len(s.arms) == 2]
+    assert paired and all(s.arms[0].outgoing and s.arms[1].outgoing for s in paired)
 
 
 def test_osm_sites_use_car_lanes_only(osm: RoadMap) -> None:
