@@ -10,7 +10,7 @@ from lxml import etree
 from sovarc.dsl.errors import InputError
 from sovarc.targets.openscenario import emit_files
 from sovarc.targets.openscenario.readback import read_scenario
-from sovarc.targets.openscenario.roadnet import write_road_network
+from sovarc.targets.openscenario.roadnet import as_opendrive_14, write_road_network
 from sovarc.targets.openscenario.schema import (
     OPENDRIVE_SCHEMAS,
     SCHEMAS,
@@ -26,6 +26,29 @@ from tests.targets.openscenario.conftest import Emitter
 from tests.targets.openscenario.plans import CASES, TOWN
 
 ESMINI_MAP = SHARED / "data" / "opendrive" / "straight_500m.xodr"
+
+# What netconvert writes for a network with a geographic offset and a crosswalk (trimmed): OpenDRIVE
+# 1.4 in its header, a 1.5 header <offset> and 1.5 outline attributes in its body.
+NETCONVERT_15_MARKUP = """<?xml version="1.0" encoding="UTF-8"?>
+<OpenDRIVE>
+    <header revMajor="1" revMinor="4" name="" version="1.00" north="10.00" south="0.00" east="10.00" west="0.00">
+        <geoReference><![CDATA[+proj=utm +zone=33 +ellps=WGS84 +datum=WGS84 +units=m +no_defs]]></geoReference>
+        <offset x="398790.46" y="5809246.45" z="-0.00" hdg="0"/>
+    </header>
+    <road name="" length="10.0" id="1" junction="-1">
+        <planView><geometry s="0" x="0" y="5" hdg="0" length="10.0"><line/></geometry></planView>
+        <lanes><laneSection s="0"><center><lane id="0" type="none" level="false"/></center></laneSection></lanes>
+        <objects>
+            <object id="c1" type="crosswalk" s="0" t="0" hdg="0" length="4" width="6">
+                <outline id="0" fillType="concrete" outer="true" closed="false" laneType="border">
+                    <cornerLocal u="2" v="-3" z="0" height="0" id="0"/>
+                    <cornerLocal u="2" v="3" z="0" height="0" id="1"/>
+                </outline>
+            </object>
+        </objects>
+    </road>
+</OpenDRIVE>
+"""
 
 
 def test_every_bundled_schema_loads_and_has_its_notice() -> None:
@@ -49,6 +72,22 @@ def test_an_opendrive_map_is_copied_byte_for_byte(tmp_path: Path) -> None:
     written = write_road_network(ESMINI_MAP, tmp_path)
     assert written.name == "straight_500m.xodr"
     assert written.read_bytes() == ESMINI_MAP.read_bytes()
+
+
+def test_netconverts_opendrive_15_markup_is_made_the_14_it_declares() -> None:
+    before = etree.fromstring(NETCONVERT_15_MARKUP.encode()).getroottree()
+    errors = " ".join(schema_errors(opendrive_schema(4), before))
+    assert "Element 'offset': This element is not expected" in errors
+    assert "Element 'outline', attribute 'fillType'" in errors
+    text = as_opendrive_14(NETCONVERT_15_MARKUP)
+    after = etree.fromstring(text.encode()).getroottree()
+    assert schema_errors(opendrive_schema(4), after) == []
+    offset = after.getroot().find("header/userData[@code='offset']/offset")
+    assert (offset.get("x"), offset.get("y"), offset.get("hdg")) == ("398790.46", "5809246.45", "0")
+    assert "<outline>" in text and '<cornerLocal u="2" v="3" z="0" height="0"/>' in text
+    geometry = "road/planView/geometry"
+    assert after.getroot().find(geometry).attrib == before.getroot().find(geometry).attrib
+    assert as_opendrive_14(text) == text
 
 
 @pytest.mark.slow  # needs SUMO
@@ -95,3 +134,18 @@ def test_an_opendrive_map_travels_with_the_scenario_and_validates(xodr: str, tmp
     assert files.xodr.name == xodr
     finding, _ = xodr_finding(read_scenario(files.xosc))
     assert finding.passed and finding.message.startswith(f"{xodr} valid against the OpenDRIVE 1.")
+
+
+@pytest.mark.slow  # netconvert on SUMO's DRT city (OpenStreetMap, about 8 s)
+def test_a_city_with_a_geographic_offset_and_crosswalks_converts_to_valid_opendrive(tmp_path: Path) -> None:
+    import sumo
+
+    city = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
+    doc = etree.parse(str(write_road_network(city, tmp_path)))
+    assert schema_errors(opendrive_schema(4), doc) == []
+    header = doc.getroot().find("header")
+    assert header.find("userData[@code='offset']/offset").get("x") == "398790.46"  # the net's -netOffset
+    assert len(doc.getroot().findall(".//object[@type='crosswalk']/outline")) > 100
+    location = etree.parse(str(city)).getroot().find("location")
+    bounds = [float(header.get(k)) for k in ("west", "south", "east", "north")]
+    assert bounds == pytest.approx([float(v) for v in location.get("convBoundary").split(",")], abs=0.01)
