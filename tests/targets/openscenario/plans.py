@@ -139,6 +139,18 @@ CASES: dict[str, Callable[[], Plan]] = {
 }
 
 
+def clipped_rear_corner() -> Plan:
+    """A failing plan, the shape of the ground truth's shallow merges: the T-bone with V2 creeping east
+    at 4 m/s and V1 closing on it from behind at 12 m/s, 8 degrees off its heading, its bumper centre
+    planned at the middle of V2's right side at the impact time. V1's front-left corner meets V2's
+    rear-right corner 0.28 s earlier, more than 3 m short of C_A: an offset rear-end, not the side hit."""
+    plan = CASES["t_bone"]()
+    t_hit, (x, y) = plan.impact.time, plan.impact.point
+    victim = straight(x + CAR.length / 2, y + CAR.width / 2, 90.0, 4.0, t_hit)
+    plan = with_samples(plan, "V2", lambda s: Sample(s.t, *victim(s.t)))
+    return with_samples(plan, "V1", lambda s: Sample(s.t, *straight(x, y, 82.0, 12.0, t_hit)(s.t)))
+
+
 def with_samples(plan: Plan, participant: str, change: Callable[[Sample], Sample]) -> Plan:
     """The plan with one participant's samples changed (for negative tests)."""
     trajectories = tuple(

@@ -11,7 +11,7 @@ from sovarc.compiler.plan import Plan, Sample
 from sovarc.targets import sumo
 from sovarc.targets.openscenario import check, emit_files
 
-from tests.targets.openscenario.plans import CASES, straight, with_samples
+from tests.targets.openscenario.plans import CASES, clipped_rear_corner, straight, with_samples
 
 pytestmark = pytest.mark.slow  # SUMO replays the plan; netconvert writes the .xodr
 
@@ -56,3 +56,18 @@ def test_a_leading_corner_is_named_a_corner(tmp_path: Path) -> None:
     verdict = check(emit_files(plan, tmp_path).xosc, plan)
     assert verdict.passed
     assert (verdict.facts["striker_face"], verdict.facts["victim_face"]) == ("front-left", "right")
+
+
+def test_a_rear_corner_clipped_before_the_collision_area_is_the_same_touch_for_both(tmp_path: Path) -> None:
+    """Where the verdicts part (the OSC oracle wants the first touch in C_A, SUMO's does not look at
+    C_A), the two still see the same touch: time, faces and angle."""
+    plan = clipped_rear_corner()
+    impact = sumo.check(plan).facts["impact"]
+    by_osc = check(emit_files(plan, tmp_path).xosc, plan)
+    assert [f.check for f in by_osc.failures] == ["first_contact"]
+    assert by_osc.facts["first_contact_time"] == pytest.approx(impact["time"], abs=0.03)
+    assert (by_osc.facts["striker_face"], by_osc.facts["victim_face"]) == (
+        impact["striker_face"],
+        impact["victim_face"],
+    )
+    assert by_osc.facts["relative_heading"] == pytest.approx(impact["angle"], abs=1.0)

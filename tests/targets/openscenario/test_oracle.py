@@ -15,7 +15,7 @@ from sovarc.targets.openscenario import VERSIONS, check, emit_files
 from sovarc.targets.verdict import Verdict
 
 from tests.targets.openscenario.conftest import Emitter
-from tests.targets.openscenario.plans import CASES, straight, with_samples
+from tests.targets.openscenario.plans import CASES, clipped_rear_corner, straight, with_samples
 
 pytestmark = pytest.mark.slow  # needs SUMO (netconvert writes the .xodr)
 
@@ -244,6 +244,21 @@ def test_an_oblique_corner_that_touches_first_inside_the_collision_area_passes(t
     assert verdict.passed, verdict.dumps()
     assert verdict.facts["first_contact_time"] == pytest.approx(t_hit - 0.33, abs=0.03)
     assert verdict.facts["striker_face"] == "front-left" and verdict.facts["victim_face"] == "front-right"
+
+
+def test_a_striker_that_clips_the_rear_corner_before_the_collision_area_fails(tmp_path: Path) -> None:
+    """One class of disagreement between the oracles on the ground truth: a striker closing from behind at a shallow
+    angle meets the victim's rear corner before C_A. A player records the crash there and then, so the
+    file does not crash where the plan says, though both bodies do reach C_A at the impact time."""
+    plan = clipped_rear_corner()
+    verdict = check(emit_files(plan, tmp_path).xosc, plan)
+    reasons = failed(verdict)
+    assert set(reasons) == {"first_contact"}
+    assert reasons["first_contact"] == (
+        "V1 and V2 first touch at t=3.72 s, before the impact t=4 s, outside C_A: V1 is 3.36 m from it"
+    )
+    assert (verdict.facts["striker_face"], verdict.facts["victim_face"]) == ("front-left", "rear-right")
+    assert verdict.facts["relative_heading"] == pytest.approx(8.0, abs=0.1)
 
 
 def test_bystanders_that_collide_before_the_impact_are_found(tmp_path: Path) -> None:
