@@ -5,10 +5,12 @@
 
 With --truth (a folder of .sov files, e.g. from `sovarc import-truth`): every scenario is staged
 on --roads sites and synthesized; each plan that synthesizes is checked by the SUMO oracle and
-emitted as OpenSCENARIO and checked by its oracle. Prints the OpenSCENARIO pass rate per road
-kind, the agreement with the SUMO oracle, every disagreement with the checks that differ and why,
-the OpenSCENARIO failures by check, and the time per stage. --plans caches the synthesized plans
-as JSON, so that a rerun only re-checks them.
+emitted as OpenSCENARIO and checked by its oracle. Prints the pass rates per road kind over two
+denominators (every scenario-site, scenarios x --roads, where one not planned counts as not
+passed; and the planned ones alone), the agreement with the SUMO oracle, every disagreement with
+the checks that differ and why, the disagreements by class, whether both oracles saw the same
+first touch, the OpenSCENARIO failures by check, and the time per stage. --plans caches the
+synthesized plans as JSON, so that a rerun only re-checks them.
 
 Without --truth: emit and check times of the tests' hand-made plans, plus a long T-bone (impact
 at 60 s, about 600 vertices per participant). Prints figures; asserts nothing.
@@ -147,84 +149,229 @@ def _failed(verdict: Verdict | None) -> set[str]:
     return set() if verdict is None else {f.check for f in verdict.failures}
 
 
-def explain(row: Row) -> str:
+# Classes of disagreement, each explained once in the summary; a plan's own figures go with it.
+REAR_CORNER = "first touch at the victim's rear corner, before C_A"
+SIDE_EARLY = "first touch on the victim's side, before C_A"
+CLASSES: dict[str, str] = {
+    REAR_CORNER: (
+        "plan defect (lowering): the striker closes on the victim from behind, a few degrees off its "
+        "heading and faster, so its front meets the victim's rear corner before it reaches the middle of the "
+        "side planned in C_A: an offset rear-end, earlier and elsewhere than the planned side hit. The OSC "
+        "oracle wants the first touch in C_A (a player records the crash at the first touch); SUMO's oracle "
+        "judges only the faces and angle at the first touch, where a rear corner counts as a side"
+    ),
+    SIDE_EARLY: (
+        "plan defect (lowering): on a shallow merge or pull-out the striker's sideways move brings its front "
+        "against the victim's side before the point planned in C_A, so the pair first touches early and "
+        "outside C_A. The OSC oracle wants the first touch in C_A; SUMO's oracle does not look at C_A"
+    ),
+    "first touch outside C_A": (
+        "plan defect: the pair first touches away from the planned crash; SUMO's oracle judges the first "
+        "collision wherever it happens"
+    ),
+    "overlap from the start": (
+        "plan defect: striker and victim start inside each other; SUMO's oracle takes that for the crash"
+    ),
+    "never touch": "striker and victim never touch in the file, yet SUMO's replay saw them collide",
+}
+CLASSES |= {f"{c} (SUMO only)": why for c, why in SUMO_ONLY.items()}
+CLASSES |= {f"{c} (OSC only)": why for c, why in OSC_ONLY.items()}
+
+
+# Known causes of faces named differently at the same first touch (SUMO's in targets/sumo/bodies.first_touch).
+FACE_CAUSES = {
+    "side named a rear corner": (
+        "SUMO's oracle takes a body's main face from the direction between the nearest points, and when its "
+        "bisection leaves them under 1e-9 m apart, from the direction between the centres: a striker beside and "
+        "behind the victim then meets its 'rear', and a point on the side near its middle becomes a rear corner. "
+        "The OSC oracle names faces by where the contact point lies on each body"
+    ),
+    "flat contact": (
+        "the faces meet flat (headings within 1°): where along the touching stretch the contact lies turns on "
+        "sub-millimetre differences in pose (SUMO judges its replayed poses, the OSC oracle the file's) and on "
+        "each oracle's rule for the nearest points; the faces are the same up to a corner"
+    ),
+    "overlapping from the start": "the bodies start inside each other: there is no first touch to read faces at",
+}
+
+
+def _face_cause(sumo: dict[str, Any], osc: dict[str, Any]) -> str:
+    """Which of FACE_CAUSES explains faces named differently ('unexplained' if none)."""
+    if osc["first_contact_time"] == 0.0:
+        return "overlapping from the start"
+    s_victim, o_victim = sumo["victim_face"].split("-"), osc["victim_face"].split("-")
+    if o_victim in (["left"], ["right"]) and s_victim == ["rear", *o_victim]:
+        return "side named a rear corner"
+    if min(sumo["angle"], 180.0 - sumo["angle"]) <= 1.0:
+        return "flat contact"
+    return "unexplained"
+
+
+@dataclass(frozen=True)
+class Reason:
+    kind: str  # a key of CLASSES, or 'judged differently: ...'
+    detail: str = ""  # this plan's figures
+
+
+def explain(row: Row) -> list[Reason]:
     """Why the two oracles disagree on a plan, from the checks that failed on each side."""
     assert row.sumo is not None and row.osc is not None
     sumo, osc = _failed(row.sumo), _failed(row.osc)
-    reasons = [f"{c}: {SUMO_ONLY[c]}" for c in sorted(sumo) if c in SUMO_ONLY]
-    reasons += [f"{c}: {OSC_ONLY[c]}" for c in sorted(osc) if c in OSC_ONLY]
+    reasons = [Reason(f"{c} (SUMO only)", _message(row.sumo, {c})) for c in sorted(sumo) if c in SUMO_ONLY]
+    reasons += [Reason(f"{c} (OSC only)", _message(row.osc, {c})) for c in sorted(osc) if c in OSC_ONLY]
     if "first_contact" in osc:
-        reasons.append(_early_touch(row.osc))
+        reasons.append(_touch_reason(row.osc))
     shared = (sumo - set(SUMO_ONLY)) ^ (osc - set(OSC_ONLY) - {"first_contact"})
     if shared:
-        reasons.append("judged differently: " + ", ".join(sorted(shared)))
-    return "; ".join(reasons) or "same checks fail on both sides"
+        reasons.append(Reason("judged differently: " + ", ".join(sorted(shared))))
+    return reasons
 
 
-def _early_touch(osc: Verdict) -> str:
+def _why(reasons: list[Reason]) -> str:
+    return "; ".join(f"{r.kind} ({r.detail})" if r.detail else r.kind for r in reasons) or "same checks fail"
+
+
+def _touch_reason(osc: Verdict) -> Reason:
     """first_contact failed: where the pair really meets, against the plan."""
-    first, planned = osc.facts.get("first_contact_time"), osc.facts.get("impact_time")
+    facts = osc.facts
+    first, planned = facts.get("first_contact_time"), facts.get("impact_time")
     if first is None:
-        return "first_contact: striker and victim never touch in the file"
+        return Reason("never touch")
     if first == 0.0:
-        return (
-            "first_contact: striker and victim overlap from the start (plan defect: their start positions"
-            " collide); SUMO's oracle takes that for the crash"
-        )
+        return Reason("overlap from the start")
     when = f"{abs(planned - first):.2f} s {'before' if first < planned else 'after'} the planned impact"
-    return (
-        f"first_contact: the pair first touches {when}, outside C_A (plan defect: the crash happens elsewhere "
-        "than planned); SUMO's oracle judges the first collision wherever it happens"
+    finding = next(f for f in osc.failures if f.check == "first_contact")
+    where = finding.message.partition("outside C_A: ")[2]
+    meet = (
+        f"{facts.get('striker_face')} of {facts.get('striker')} into {facts.get('victim_face')} of "
+        f"{facts.get('victim')} at {facts.get('relative_heading')}°"
     )
+    detail = f"{when}; {where}; {meet}"
+    if facts.get("crash_type") == "side" and first < planned:
+        victim = str(facts.get("victim_face", "")).split("-")
+        return Reason(REAR_CORNER if "rear" in victim else SIDE_EARLY, detail)
+    return Reason("first touch outside C_A", detail)
 
 
 def _message(verdict: Verdict, checks: set[str]) -> str:
     return " | ".join(f"{f.check}: {f.message}" for f in verdict.failures if f.check in checks)
 
 
-def report(rows: list[Row]) -> None:
-    checked = [r for r in rows if r.osc is not None and r.sumo is not None]
-    print(f"ground truth: {len({r.scenario for r in rows})} scenarios, {len(rows)} scenario-sites")
-    print(f"synthesized: {len(checked)}; planning or synthesis failed: {len(rows) - len(checked)}")
-    print(f"\n{'road kind':<14}{'plans':>6}{'OSC pass':>14}{'SUMO pass':>14}{'agree':>14}")
-    kinds = sorted({r.kind for r in checked})
-    for kind in [*kinds, "all"]:
-        chosen = [r for r in checked if kind in ("all", r.kind)]
-        n = max(1, len(chosen))
-        osc = sum(r.osc.passed for r in chosen if r.osc)
-        sumo = sum(r.sumo.passed for r in chosen if r.sumo)
+def _rates(rows: list[Row], roads: int) -> None:
+    """Pass rates per road kind: of every scenario-site (scenarios x roads), and of the planned ones."""
+    scenarios = {r.scenario: r.kind for r in rows}
+    planned = [r for r in rows if r.osc is not None and r.sumo is not None]
+    sites = len(scenarios) * roads
+    placed = sum(r.site != "-" for r in rows)
+    failed = sum(r.site != "-" and r.error is not None for r in rows)
+    print(f"ground truth: {len(scenarios)} scenarios x {roads} sites = {sites} scenario-sites")
+    print(
+        f"  planned (synthesized, judged by both oracles): {len(planned)}; not planned: {sites - len(planned)}"
+        f" ({sites - placed} for want of a fitting site on the map, {failed} failed in lowering or synthesis)"
+    )
+    print("  'of sites' counts a scenario-site that was not planned as not passed; 'of planned' leaves it out")
+    head = f"{'pass':>5}{'of sites':>10}{'of planned':>12}"
+    print(f"\n{'road kind':<14}{'sites':>6}{'planned':>8} | OSC {head} | SUMO {head} | {'agree of planned':>16}")
+    for kind in [*sorted(set(scenarios.values())), "all"]:
+        n_sites = roads * sum(kind in ("all", k) for k in scenarios.values())
+        chosen = [r for r in planned if kind in ("all", r.kind)]
+        osc = sum(bool(r.osc and r.osc.passed) for r in chosen)
+        sumo = sum(bool(r.sumo and r.sumo.passed) for r in chosen)
         agree = sum(r.agree for r in chosen)
+        n = len(chosen)
         print(
-            f"{kind:<14}{len(chosen):>6}{osc:>6} {100 * osc / n:5.1f}%{sumo:>6} {100 * sumo / n:5.1f}%"
-            f"{agree:>6} {100 * agree / n:5.1f}%"
+            f"{kind:<14}{n_sites:>6}{n:>8} | OSC {osc:>5}{_pct(osc, n_sites):>10}{_pct(osc, n):>12}"
+            f" | SUMO {sumo:>5}{_pct(sumo, n_sites):>10}{_pct(sumo, n):>12} | {agree:>9}{_pct(agree, n):>7}"
         )
-    both = Counter((r.sumo.passed, r.osc.passed) for r in checked if r.sumo and r.osc)
+
+
+def _pct(n: int, of: int) -> str:
+    return f"{100 * n / of:.1f}%" if of else "-"
+
+
+def _disagreements(planned: list[Row]) -> None:
+    both = Counter((r.sumo.passed, r.osc.passed) for r in planned if r.sumo and r.osc)
     print(
         f"\nboth pass {both[(True, True)]}, both fail {both[(False, False)]}, "
         f"only SUMO passes {both[(True, False)]}, only OSC passes {both[(False, True)]}"
     )
     print("\ndisagreements (scenario, site, SUMO | OSC failed checks, why):")
-    for r in checked:
+    classes: dict[str, list[Row]] = defaultdict(list)
+    for r in planned:
         if r.agree:
             continue
         assert r.sumo is not None and r.osc is not None
         sumo, osc = _failed(r.sumo), _failed(r.osc)
+        reasons = explain(r)
+        for reason in reasons:
+            classes[reason.kind].append(r)
         print(f"  {r.scenario} {r.site}: SUMO {sorted(sumo) or 'pass'} | OSC {sorted(osc) or 'pass'}")
-        print(f"    why: {explain(r)}")
+        print(f"    why: {_why(reasons)}")
         if sumo:
             print(f"    SUMO: {_message(r.sumo, sumo)}")
         if osc:
             print(f"    OSC: {_message(r.osc, osc)}")
+    print("\ndisagreements by class (a plan may fall in several):")
+    for kind, chosen in sorted(classes.items(), key=lambda item: -len(item[1])):
+        print(f"  {kind} ({len(chosen)}): " + ", ".join(f"{r.scenario}@{r.site}" for r in chosen))
+        print(f"    {CLASSES.get(kind, 'the two oracles judge the same check differently: read both messages')}")
+
+
+def _same_touch(sumo: dict[str, Any], osc: dict[str, Any]) -> tuple[bool, bool, bool]:
+    """Whether the two oracles' first touches agree in time (0.03 s), angle (3°) and faces."""
+    return (
+        abs(sumo["time"] - osc["first_contact_time"]) <= 0.03,
+        abs(sumo["angle"] - osc["relative_heading"]) <= 3.0,
+        (sumo["striker_face"], sumo["victim_face"]) == (osc["striker_face"], osc["victim_face"]),
+    )
+
+
+def _first_touches(planned: list[Row]) -> None:
+    """Whether both oracles saw the same first touch, and where not, what each saw."""
+    pairs = [
+        (r, r.sumo.facts["impact"], r.osc.facts)
+        for r in planned
+        if r.sumo and r.osc and "impact" in r.sumo.facts and "victim_face" in r.osc.facts
+    ]
+    same = [_same_touch(s, o) for _, s, o in pairs]
+    counts = [sum(flags[k] for flags in same) for k in range(3)]
+    print(
+        f"\nfirst touch, SUMO beside OSC ({len(pairs)} plans where both see one): time within 0.03 s {counts[0]},"
+        f" angle within 3° {counts[1]}, same faces {counts[2]}"
+    )
+    causes: Counter[str] = Counter()
+    for (r, s, o), flags in zip(pairs, same, strict=True):
+        if not all(flags):
+            cause = _face_cause(s, o) if flags[:2] == (True, True) else "time or angle differ"
+            causes[cause] += 1
+            print(
+                f"  {r.scenario} {r.site}: SUMO {s['striker_face']}/{s['victim_face']} {s['angle']}° t={s['time']}"
+                f" | OSC {o['striker_face']}/{o['victim_face']} {o['relative_heading']}° t={o['first_contact_time']}"
+                f" ({cause})"
+            )
+    for cause, n in causes.most_common():
+        print(f"  {cause} ({n}): {FACE_CAUSES.get(cause, 'read both verdicts')}")
+
+
+def report(rows: list[Row], roads: int) -> None:
+    planned = [r for r in rows if r.osc is not None and r.sumo is not None]
+    _rates(rows, roads)
+    _disagreements(planned)
+    _first_touches(planned)
     by_check: dict[str, list[Row]] = defaultdict(list)
-    for r in checked:
+    for r in planned:
         for c in sorted(_failed(r.osc)):
             by_check[c].append(r)
     print("\nOpenSCENARIO failures by check (a plan may fail several):")
     for c, chosen in sorted(by_check.items(), key=lambda item: -len(item[1])):
         print(f"  {c} ({len(chosen)}): " + ", ".join(f"{r.scenario}@{r.site}" for r in chosen))
+    print("\nnot planned (lowering or synthesis; not judged by either oracle):")
+    for r in rows:
+        if r.error is not None:
+            print(f"  {r.scenario} {r.site}: {r.error}")
     print("\ntime per scenario-site, median (max):")
     for stage in ("synthesize", "sumo check", "osc emit", "osc check"):
-        values = [r.seconds[stage] for r in checked if stage in r.seconds]
+        values = [r.seconds[stage] for r in planned if stage in r.seconds]
         if values:
             print(f"  {stage:<12}{statistics.median(values) * 1e3:9.0f} ms ({max(values) * 1e3:.0f} ms)")
 
@@ -235,7 +382,8 @@ def dump(rows: list[Row], out: str) -> None:
 
     data = [
         {"scenario": r.scenario, "kind": r.kind, "site": r.site, "error": r.error, "sumo": side(r.sumo),
-         "openscenario": side(r.osc), "why": None if r.agree or r.osc is None else explain(r)}
+         "openscenario": side(r.osc), "why": None if r.agree or r.osc is None else _why(explain(r)),
+         "classes": [] if r.agree or r.osc is None else [c.kind for c in explain(r)]}
         for r in rows
     ]  # fmt: skip
     Path(out).write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
@@ -299,7 +447,7 @@ def main() -> None:
         return
     start = time.perf_counter()
     rows = evaluate(args)
-    report(rows)
+    report(rows, args.roads)
     print(f"  wall time   {time.perf_counter() - start:9.1f} s")
     if args.json:
         dump(rows, args.json)
