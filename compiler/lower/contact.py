@@ -25,6 +25,7 @@ import numpy as np
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.maps.geometry import angle_diff
 from sovarc.dsl.ir import CrashType
+from sovarc.targets.verdict import CRASH_ANGLES  # what every oracle calls frontal
 
 STEP = 0.5  # m between the points compared
 TOUCH = 0.45  # m: lines closer than this meet
@@ -33,6 +34,9 @@ APART = 1.0  # m: ... at the first point where they are this far apart
 APART_WITHIN = 30.0  # m: lines that stay closer over this far do not merge, they run together
 FRONT_OFFSET = 0.9  # m: fronts this far apart sideways still meet (about half a car's width)
 HEAD_ON = 135.0  # degrees between headings for an offset frontal contact
+# Lines that cross for a frontal crash meet at least as far apart as every oracle's frontal angle:
+# a crossing under it is no frontal crash (it used to be planned and then failed the replay).
+FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 
 
@@ -67,7 +71,9 @@ def _accepts(crash: CrashType, c: Contact) -> bool:
     if crash is CrashType.REAR_END:
         return (c.kind == "shared" and c.sign == 1) or (c.kind == "crossing" and c.angle < 45.0)
     if crash is CrashType.FRONTAL:
-        return (c.kind == "shared" and c.sign == -1) or (c.kind in ("crossing", "offset") and c.angle >= 60.0)
+        return (c.kind == "shared" and c.sign == -1) or (
+            c.kind in ("crossing", "offset") and c.angle >= FRONTAL_CROSSING
+        )
     if c.kind == "offset":
         return False
     return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)

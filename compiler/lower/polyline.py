@@ -9,7 +9,6 @@ import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
-from sovarc.compiler.maps.geometry import angle_diff
 
 Point = tuple[float, float]
 
@@ -88,22 +87,36 @@ class Polyline:
         k = int(np.argmin(d))
         return float(self.s[k] + u[k] * math.sqrt(lengths2[k])), float(d[k])
 
+    def distances(self, points: np.ndarray) -> np.ndarray:
+        """For each of `points` (n x 2), its distance to the line: `project` for many points at once."""
+        a, ab = self.points[:-1], self.points[1:] - self.points[:-1]
+        lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
+        rel = points[:, None, :] - a[None, :, :]  # n x segments x 2
+        u = np.clip((rel * ab[None, :, :]).sum(axis=2) / lengths2, 0.0, 1.0)
+        gap = rel - ab[None, :, :] * u[:, :, None]
+        return np.hypot(gap[:, :, 0], gap[:, :, 1]).min(axis=1)
+
     def offset(self, lateral: float) -> Polyline:
         """The polyline shifted sideways, to the right of travel for positive `lateral`."""
         normals = _vertex_normals(self.points)
         return Polyline(self.points + lateral * normals)
 
     def curvature_radius(self, window: float = 6.0) -> np.ndarray:
-        """Radius of curvature at each vertex, over a window of +-window/2 metres (inf if straight)."""
+        """Radius of curvature at each vertex, over a window of +-window/2 metres (inf if straight):
+        the window's length over the turn between the headings at its two ends."""
+        a = np.maximum(0.0, self.s - window / 2)
+        b = np.minimum(self.length, self.s + window / 2)
+        turn = np.abs(_angle_diffs(self._headings(b - 1e-6), self._headings(a)))
         radii = np.full(len(self.s), np.inf)
-        for k, s in enumerate(self.s):
-            a, b = max(0.0, s - window / 2), min(self.length, s + window / 2)
-            if b - a < 1.0:
-                continue
-            turn = abs(angle_diff(self.heading(b - 1e-6), self.heading(a)))
-            if turn > 1e-3:
-                radii[k] = (b - a) / math.radians(turn)
+        bent = (b - a >= 1.0) & (turn > 1e-3)
+        radii[bent] = (b - a)[bent] / np.radians(turn[bent])
         return radii
+
+    def _headings(self, at: np.ndarray) -> np.ndarray:
+        """`heading` at many arc lengths."""
+        k = np.clip(np.searchsorted(self.s, at, side="right") - 1, 0, len(self.s) - 2)
+        d = self.points[k + 1] - self.points[k]
+        return np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0
 
 
 def concat(parts: Iterable[Polyline]) -> Polyline:
@@ -163,3 +176,9 @@ def _vertex_normals(points: np.ndarray) -> np.ndarray:
     right = np.column_stack((d[:, 1], -d[:, 0]))
     normals = np.vstack([right[:1], (right[:-1] + right[1:]) / 2.0, right[-1:]])
     return normals / np.maximum(np.hypot(*normals.T), 1e-12)[:, None]
+
+
+def _angle_diffs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """`angle_diff` element-wise: signed a - b in (-180, 180]."""
+    d = (a - b) % 360.0
+    return np.where(d > 180.0, d - 360.0, d)

@@ -278,11 +278,15 @@ def _at_stop_line(event: Event, entry: float, actions: Any) -> Event:
 def lanes_touched(line: Polyline, match: SiteMatch, margin: float = 0.3) -> set[str]:
     """Every lane of the site whose area the line passes through (within `margin` of its edge)."""
     points = line.resample(1.0)
+    points = points[:: max(1, len(points) // 400)]
+    low, high = points.min(axis=0), points.max(axis=0)
     found = set()
     for arm in match.site.arms:
         for lane in arm.incoming + arm.outgoing:
-            shape = Polyline(lane.shape)
+            shape = np.asarray(lane.shape)
             reach = lane.width / 2.0 + margin
-            if any(shape.project((float(x), float(y)))[1] <= reach for x, y in points[:: max(1, len(points) // 400)]):
+            if (shape.max(axis=0) < low - reach).any() or (shape.min(axis=0) > high + reach).any():
+                continue  # the lane's box misses the line's
+            if (Polyline(lane.shape).distances(points) <= reach).any():
                 found.add(lane.id)
     return found

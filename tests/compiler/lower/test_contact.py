@@ -16,6 +16,7 @@ def route(pid: str, *points: tuple[float, float]) -> Route:
 
 NORTH = route("A", (0.0, -50.0), (0.0, 50.0))
 EAST = route("B", (-50.0, 0.0), (50.0, 0.0))
+ONCOMING_ACROSS = route("C", (-43.301, 25.0), (43.301, -25.0))  # heading 120: across NORTH's path and towards it
 
 
 def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None:
@@ -24,9 +25,12 @@ def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None
     assert side.lo == side.hi == pytest.approx(50.0)  # the striker's front is at the crossing point
     # the victim's front is half a body past the crossing, so that its side's middle is there
     assert side.victim_s(side.lo) == pytest.approx(50.0 + FACE[CrashType.SIDE] * CAR.length)
-    (frontal,) = contacts(NORTH, EAST, CrashType.FRONTAL)
-    assert frontal.victim_s(frontal.lo) == pytest.approx(50.0)  # fronts meet
     assert contacts(NORTH, EAST, CrashType.REAR_END) == []
+    # at right angles fronts can only meet corner to corner: no frontal crash for any oracle
+    assert contacts(NORTH, EAST, CrashType.FRONTAL) == []
+    (frontal,) = contacts(NORTH, ONCOMING_ACROSS, CrashType.FRONTAL)
+    assert frontal.angle == pytest.approx(120.0, abs=0.5)
+    assert frontal.victim_s(frontal.lo) == pytest.approx(50.0)  # fronts meet
     assert describe(side) == "paths cross at 90 degrees"
 
 
