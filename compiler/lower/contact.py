@@ -31,6 +31,8 @@ STEP = 0.5  # m between the points compared
 TOUCH = 0.45  # m: lines closer than this meet
 MERGE_BACK = 4.0  # m before a merge (after a diverge) from where the lines' angle is measured
 APART = 1.0  # m: ... at the first point where they are this far apart
+SHALLOW = 30.0  # degrees: lines crossing at less than this meet side to front before they cross
+SIDE_OVERLAP = 0.3  # m a striker's front corner reaches into the victim's side at a shallow contact
 APART_WITHIN = 30.0  # m: lines that stay closer over this far do not merge, they run together
 FRONT_OFFSET = 0.9  # m: fronts this far apart sideways still meet (about half a car's width)
 HEAD_ON = 135.0  # degrees between headings for an offset frontal contact
@@ -89,6 +91,7 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
     angle = np.abs((ha - hb[nearest] + 180.0) % 360.0 - 180.0)
     parallel = close & ((angle < 20.0) | (angle > 160.0))
     found: list[Contact] = []
+    gap = (striker.body.width + victim.body.width) / 2.0 - SIDE_OVERLAP
     for lo, hi in _runs(parallel):
         if sa[hi] - sa[lo] < 8.0:
             continue  # a brief touch: counted as a crossing below
@@ -99,7 +102,7 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
         close[lo : hi + 1] = False
         if same:
-            meets = (_merge(a, b, ha, hb, d, nearest, lo), _diverge(a, b, ha, hb, d, nearest, hi))
+            meets = (_merge(a, b, ha, hb, d, nearest, lo, gap), _diverge(a, b, ha, hb, d, nearest, hi))
         else:
             meets = (_swerve_into(a, ha, hb, d, nearest, lo),)
         for meet in meets:
@@ -108,6 +111,9 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
                 found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
     for lo, hi in _runs(close):
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
+        if angle[i] < SHALLOW:
+            # bodies touch well before shallow lines cross: meet where they are `gap` apart
+            i = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), i)
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
     # Fronts meet head-on a little to one side of each other before the lines cross (a car
@@ -121,16 +127,27 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
 
 
 def _merge(
-    a: np.ndarray, b: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int
+    a: np.ndarray,
+    b: np.ndarray,
+    ha: np.ndarray,
+    hb: np.ndarray,
+    d: np.ndarray,
+    nearest: np.ndarray,
+    lo: int,
+    gap: float,
 ) -> tuple[float, float, float] | None:
     """Where two lines that come from different places join one lane, as (s, u, angle): the
-    lines converge at a shallow angle, and the side of one meets the other's front there."""
+    lines converge at a shallow angle, and the side of one meets the other's front where they
+    are still `gap` apart. At 8 degrees bodies touch some 10 m before the lines join, so a
+    contact placed at the join would be preceded by that first touch, outside C_A."""
     j = int(nearest[lo])
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if lo < k or j < k:
             return None
         if d[lo - k].min() > APART or d[:, j - k].min() > APART:
-            return lo * STEP, j * STEP, max(_turn(ha[lo - k], hb[j - k]), 5.0)
+            angle = max(_turn(ha[lo - k], hb[j - k]), 5.0)
+            back = next((i for i in range(lo, max(-1, lo - int(APART_WITHIN / STEP)), -1) if d[i].min() >= gap), lo)
+            return back * STEP, float(nearest[back]) * STEP, angle
     return None
 
 

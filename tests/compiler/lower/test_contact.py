@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
-from sovarc.compiler.lower.contact import FACE, contacts, describe
+from sovarc.compiler.lower.contact import FACE, SIDE_OVERLAP, contacts, describe
 from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.plan import CAR
@@ -59,7 +61,7 @@ def test_a_lane_shared_in_opposite_directions_is_a_head_on_range() -> None:
     assert contacts(striker, victim, CrashType.SIDE) == []
 
 
-def test_a_merge_gives_a_rear_end_range_after_it_and_a_side_contact_where_the_lines_join() -> None:
+def test_a_merge_gives_a_rear_end_range_after_it_and_a_side_contact_before_the_lines_join() -> None:
     striker = route("A", (-15.0, 24.0), (0.0, 50.0), (0.0, 100.0))  # joins the victim's line at 30 degrees
     victim = route("B", (0.0, 0.0), (0.0, 100.0))
     join = striker.line.s[1]  # about 30 m
@@ -70,8 +72,26 @@ def test_a_merge_gives_a_rear_end_range_after_it_and_a_side_contact_where_the_li
     assert side and all(c.kind == "crossing" for c in side)
     first = side[0]
     assert first.angle == pytest.approx(30.0, abs=1.0)
-    assert first.lo == pytest.approx(join, abs=1.0)
-    # the striker's front meets the middle of the victim's side at the join
+    # bodies touch before the lines join: where the lines are still (half a width each - overlap) apart
+    gap = CAR.width - SIDE_OVERLAP
+    assert first.lo == pytest.approx(join - gap / math.sin(math.radians(30.0)), abs=1.0)
+    front = striker.line.point(first.lo)
+    assert abs(front[0]) == pytest.approx(gap, abs=0.3)
+    # ... and the striker's front meets the middle of the victim's side there
     middle = first.victim_s(first.lo) - FACE[CrashType.SIDE] * CAR.length
-    assert victim.line.point(middle)[1] == pytest.approx(50.0, abs=1.0)
+    assert victim.line.point(middle)[1] == pytest.approx(front[1], abs=0.6)
     assert contacts(striker, victim, CrashType.FRONTAL) == []
+
+
+def test_lines_crossing_shallowly_meet_side_on_before_they_cross() -> None:
+    # the striker drifts across the victim's line at 10 degrees and goes on past it
+    slope = math.tan(math.radians(10.0))
+    striker = route("A", (-50.0 * slope, 0.0), (50.0 * slope, 100.0))
+    victim = route("B", (0.0, 0.0), (0.0, 100.0))
+    (side,) = contacts(striker, victim, CrashType.SIDE)
+    assert side.kind == "crossing" and side.angle == pytest.approx(10.0, abs=0.5)
+    front = striker.line.point(side.lo)
+    assert front[1] < 45.0  # before the crossing at y = 50
+    assert abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
+    (steep,) = contacts(NORTH, EAST, CrashType.SIDE)
+    assert steep.lo == pytest.approx(50.0)  # at right angles the front meets the side where the lines cross

@@ -147,7 +147,9 @@ def test_striker_and_victim_touch_at_the_faces_the_crash_type_names(name: str) -
             hx, hy = heading_vector(victim.heading)
             back = (victim.x - front[0]) * hx + (victim.y - front[1]) * hy  # m behind the victim's front
             lateral = abs((front[0] - victim.x) * hy - (front[1] - victim.y) * hx)
-            if not (-0.1 <= back <= length + 0.1) or lateral > width / 2.0 + LANE_MARGIN:
+            # the front bumper (half the striker's width each side of its centre) reaches the side
+            reach = width / 2.0 + plan.trajectory(impact.striker).body.width / 2.0
+            if not (-0.1 <= back <= length + 0.1) or lateral > reach:
                 bad.append(f"{where}: side: striker {back:.2f} m behind the victim's front, {lateral:.2f} m aside")
     assert not bad, "\n".join(bad)
 
