@@ -76,15 +76,25 @@ def _corner(primary: str, face: str) -> bool:
 
 
 def overlap(a: Body, b: Body) -> bool:
-    """Whether the two rectangles share area (separating axis test)."""
+    """Whether the two rectangles share area (separating axis test); touching is not overlapping."""
+    return _separation(a, b)[0] < -1e-9
+
+
+def _separation(a: Body, b: Body) -> tuple[float, Point]:
+    """The widest gap between the rectangles along any face normal of either (negative: the least
+    they overlap by), and that normal pointing from a towards b. Where two bodies just touch, it is
+    the normal of the face that is touched: the direction the contact pushes in."""
     pa, pb = a.corners(), b.corners()
+    best: tuple[float, Point] = (-math.inf, (0.0, 0.0))
     for body in (a, b):
-        for axis in body.axes:
-            ra = [p[0] * axis[0] + p[1] * axis[1] for p in pa]
-            rb = [p[0] * axis[0] + p[1] * axis[1] for p in pb]
-            if max(ra) <= min(rb) + 1e-9 or max(rb) <= min(ra) + 1e-9:  # touching is not overlapping
-                return False
-    return True
+        for ax, ay in body.axes:
+            ra = [p[0] * ax + p[1] * ay for p in pa]
+            rb = [p[0] * ax + p[1] * ay for p in pb]
+            ahead, behind = min(rb) - max(ra), min(ra) - max(rb)  # b beyond a along the axis, or before it
+            gap = (ahead, (ax, ay)) if ahead >= behind else (behind, (-ax, -ay))
+            if gap[0] > best[0]:
+                best = gap
+    return best
 
 
 def _closest_on_segment(p: Point, a: Point, b: Point) -> Point:
@@ -135,7 +145,13 @@ class Contact:
 
 def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]) -> Contact:
     """The contact of bodies a and b between time t0 (apart) and t1 (overlapping), with the
-    poses at both times; found by bisection on straight-line motion between them."""
+    poses at both times; found by bisection on straight-line motion between them.
+
+    At the last instant apart the bodies are under a nanometre from each other, so the direction
+    between their nearest points is noise; the contact's direction is the face normal that still
+    separates them, that of the face a corner (or face) meets. Each body's face is the one turned
+    that way, and its zone the faces at the contact point: a corner driven into the middle of a
+    side is that corner on one body and that side on the other, as the OpenSCENARIO oracle names them."""
     lo, hi = 0.0, 1.0
     if overlap(a[0], b[0]):  # already touching at t0: nothing to bisect
         hi = 0.0
@@ -147,12 +163,13 @@ def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]
             else:
                 lo = mid
     body_a, body_b = between(*a, lo), between(*b, lo)
-    near = [(body_a.centre, body_b.centre)] if hi == 0.0 else _near_pairs(body_a, body_b)
-    pa, pb = near[0]
-    direction = (pb[0] - pa[0], pb[1] - pa[1])
-    if math.hypot(*direction) < 1e-9:  # touching at a point: take the centres' direction
+    if hi == 0.0:  # no instant of touch to read: the centres stand in for the contact
+        near = [(body_a.centre, body_b.centre)]
         (ax, ay), (bx, by) = body_a.centre, body_b.centre
         direction = (bx - ax, by - ay)
+    else:  # apart by under a nanometre: the nearest points coincide, the axis that still separates them does not
+        near = _near_pairs(body_a, body_b)
+        direction = _separation(body_a, body_b)[1]
     faces = (body_a.face_towards(direction), body_b.face_towards((-direction[0], -direction[1])))
     angle = abs(((body_a.heading - body_b.heading + 180.0) % 360.0) - 180.0)
     points = [((p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0) for p, q in near]
