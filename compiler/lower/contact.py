@@ -102,9 +102,13 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
         close[lo : hi + 1] = False
         if same:
-            meets = (_merge(a, b, ha, hb, d, nearest, lo, gap), _diverge(a, b, ha, hb, d, nearest, hi))
+            rear = victim.body.length / 2.0  # from the middle of the victim's side to its rear
+            meets = (
+                _merge(a, b, ha, hb, d, nearest, lo, gap),
+                _diverge(a, b, ha, hb, d, nearest, hi, victim.body.width / 2.0, rear),
+            )
         else:
-            meets = (_swerve_into(a, ha, hb, d, nearest, lo),)
+            meets = (_swerve_into(a, ha, hb, d, nearest, lo, gap),)
         for meet in meets:
             if meet is not None:
                 s_striker, u, turn = meet
@@ -112,8 +116,12 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
     for lo, hi in _runs(close):
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
         if angle[i] < SHALLOW:
-            # bodies touch well before shallow lines cross: meet where they are `gap` apart
-            i = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), i)
+            # bodies touch well before shallow lines cross: meet where they are `gap` apart; lines
+            # never that far apart just before are the end of a shared stretch (a diverge, above)
+            back = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), None)
+            if back is None:
+                continue
+            i = back
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
     # Fronts meet head-on a little to one side of each other before the lines cross (a car
@@ -152,10 +160,21 @@ def _merge(
 
 
 def _diverge(
-    a: np.ndarray, b: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, hi: int
+    a: np.ndarray,
+    b: np.ndarray,
+    ha: np.ndarray,
+    hb: np.ndarray,
+    d: np.ndarray,
+    nearest: np.ndarray,
+    hi: int,
+    half_width: float,
+    rear: float,
 ) -> tuple[float, float, float] | None:
     """Where the victim's line leaves a lane the striker's line stays in, as (s, u, angle): a
-    striker following a vehicle that turns off hits its side as it angles out of the lane."""
+    striker following a vehicle that turns off hits it as it angles out of the lane. What it
+    hits first is the rear corner still in the lane, so the contact puts the victim's rear at
+    the striker's front once the victim's line is half its width out (u is the arc length
+    where the middle of its side must then be, `rear` further on)."""
     j = int(nearest[hi])
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if hi + k >= len(a) or j + k >= len(b):
@@ -163,21 +182,23 @@ def _diverge(
         if d[hi + k].min() > APART and d[:, j + k].min() > APART:
             if _turn(hb[j], hb[j + k]) <= _turn(ha[hi], ha[hi + k]):
                 return None  # the striker is the one that leaves: its front moves away from the victim
-            return hi * STEP, j * STEP, max(_turn(ha[hi + k], hb[j + k]), 5.0)
+            out = next((i for i in range(hi, hi + k + 1) if d[i].min() >= half_width), hi)
+            return out * STEP, float(nearest[out]) * STEP + rear, max(_turn(ha[hi + k], hb[j + k]), 5.0)
     return None
 
 
 def _swerve_into(
-    a: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int
+    a: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int, gap: float
 ) -> tuple[float, float, float] | None:
     """Where the striker's line swerves into a lane the victim drives the other way, as
-    (s, u, angle): its front, still angled, meets the oncoming victim's side."""
-    j = int(nearest[lo])
+    (s, u, angle): its front, still angled, meets the oncoming victim's side where the lines
+    are still `gap` apart (as in a merge)."""
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if lo < k:
             return None
         if d[lo - k].min() > APART:
-            return lo * STEP, j * STEP, _turn(ha[lo - k], hb[j])
+            back = next((i for i in range(lo, max(-1, lo - int(APART_WITHIN / STEP)), -1) if d[i].min() >= gap), lo)
+            return back * STEP, float(nearest[back]) * STEP, _turn(ha[lo - k], hb[int(nearest[lo])])
     return None
 
 

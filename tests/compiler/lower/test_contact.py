@@ -95,3 +95,25 @@ def test_lines_crossing_shallowly_meet_side_on_before_they_cross() -> None:
     assert abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
     (steep,) = contacts(NORTH, EAST, CrashType.SIDE)
     assert steep.lo == pytest.approx(50.0)  # at right angles the front meets the side where the lines cross
+
+
+def test_a_victim_angling_out_of_the_lane_is_met_at_its_rear_once_half_out() -> None:
+    striker = route("A", (0.0, 0.0), (0.0, 100.0))
+    victim = route("B", (0.0, 10.0), (0.0, 50.0), (-15.0, 76.0))  # leaves the shared line at 30 degrees
+    side = [c for c in contacts(striker, victim, CrashType.SIDE) if c.kind == "crossing"]
+    assert side
+    first = side[0]
+    assert first.angle == pytest.approx(30.0, abs=1.0)
+    rear = victim.line.point(first.victim_s(first.lo) - CAR.length)
+    front = striker.line.point(first.lo)
+    assert front[1] > 50.0  # after the lines part
+    assert math.dist(rear, front) == pytest.approx(CAR.width / 2.0, abs=0.3)  # its rear half a width out
+
+
+def test_a_wrong_way_swerve_meets_the_oncoming_side_before_the_lines_join() -> None:
+    striker = route("A", (3.5, 0.0), (3.5, 20.0), (0.0, 40.0), (0.0, 100.0))  # swerves into the oncoming lane
+    victim = route("B", (0.0, 100.0), (0.0, 0.0))
+    swerve = [c for c in contacts(striker, victim, CrashType.SIDE) if c.kind == "crossing"]
+    assert swerve
+    front = striker.line.point(swerve[0].lo)
+    assert front[1] < 40.0 and abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
