@@ -10,6 +10,7 @@ and victim can meet (contact.py), and solve starts, stops, speeds and the impact
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
@@ -154,6 +155,16 @@ def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: 
     meet = _meeting_move(victim, striker, crash)
     if meet is not None:
         out.append((scenario, {victim_id: meet}, None))
+    if crash is CrashType.FRONTAL:
+        # Fronts also meet where one turns across the other's path at a wide angle (at a T, a
+        # car turning out of the stem and one turning into the road it crosses): the other
+        # unnamed junction moves, of one car or of both, before the site's other rotations.
+        seen = [{pid: kind for pid, (kind, _) in moves.items()} for _, moves, _ in out]
+        for kinds in _move_choices(striker, victim):
+            if kinds and kinds not in seen:
+                partner = {striker_id: victim_id, victim_id: striker_id}
+                why = {pid: (kind, f"to cross {partner[pid]}'s path front to front") for pid, kind in kinds.items()}
+                out.append((scenario, why, None))
     return out
 
 
@@ -264,6 +275,21 @@ def _routes(
         exit_s = max((e.hi for e in partner.events if e.kind in JUNCTION_MOVES), default=None)
         routes[p.id] = pedestrian_route(p, partner, match, crash, exit_s)
     return routes
+
+
+def _move_choices(*people: Participant) -> list[dict[str, ActionKind]]:
+    """Every choice of junction move for those of `people` whose actions name none."""
+    moves = (ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT, ActionKind.GO_ACROSS)
+    free = [
+        (None, *moves)
+        if p.role is Role.VEHICLE and not any(a.kind in JUNCTION_MOVES for a in p.known_actions)
+        else (None,)
+        for p in people
+    ]
+    return [
+        {p.id: kind for p, kind in zip(people, combo, strict=True) if kind is not None}
+        for combo in itertools.product(*free)
+    ]
 
 
 def _meeting_move(p: Participant, partner: Participant, crash: CrashType) -> tuple[ActionKind, str] | None:
