@@ -104,7 +104,7 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         if same:
             rear = victim.body.length / 2.0  # from the middle of the victim's side to its rear
             meets = (
-                _merge(a, b, ha, hb, d, nearest, lo, gap),
+                _merge(ha, hb, d, nearest, lo, gap),
                 _diverge(a, b, ha, hb, d, nearest, hi, victim.body.width / 2.0, rear),
             )
         else:
@@ -118,7 +118,7 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         if angle[i] < SHALLOW:
             # bodies touch well before shallow lines cross: meet where they are `gap` apart; lines
             # never that far apart just before are the end of a shared stretch (a diverge, above)
-            back = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), None)
+            back = _apart_before(d, i, gap)
             if back is None:
                 continue
             i = back
@@ -134,15 +134,13 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
     return found
 
 
+def _apart_before(d: np.ndarray, i: int, gap: float) -> int | None:
+    """The last striker point at or before `i` (within APART_WITHIN) at least `gap` from the victim's line."""
+    return next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), None)
+
+
 def _merge(
-    a: np.ndarray,
-    b: np.ndarray,
-    ha: np.ndarray,
-    hb: np.ndarray,
-    d: np.ndarray,
-    nearest: np.ndarray,
-    lo: int,
-    gap: float,
+    ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int, gap: float
 ) -> tuple[float, float, float] | None:
     """Where two lines that come from different places join one lane, as (s, u, angle): the
     lines converge at a shallow angle, and the side of one meets the other's front where they
@@ -154,7 +152,8 @@ def _merge(
             return None
         if d[lo - k].min() > APART or d[:, j - k].min() > APART:
             angle = max(_turn(ha[lo - k], hb[j - k]), 5.0)
-            back = next((i for i in range(lo, max(-1, lo - int(APART_WITHIN / STEP)), -1) if d[i].min() >= gap), lo)
+            back = _apart_before(d, lo, gap)
+            back = lo if back is None else back
             return back * STEP, float(nearest[back]) * STEP, angle
     return None
 
@@ -171,10 +170,10 @@ def _diverge(
     rear: float,
 ) -> tuple[float, float, float] | None:
     """Where the victim's line leaves a lane the striker's line stays in, as (s, u, angle): a
-    striker following a vehicle that turns off hits it as it angles out of the lane. What it
-    hits first is the rear corner still in the lane, so the contact puts the victim's rear at
-    the striker's front once the victim's line is half its width out (u is the arc length
-    where the middle of its side must then be, `rear` further on)."""
+    striker following a vehicle that turns off hits it as it angles out of the lane. At a
+    shallow angle what it hits first is the rear corner still in the lane, so the contact puts
+    the victim's rear at the striker's front once the victim's line is half its width out (u is
+    the arc length where the middle of its side must then be, `rear` further on)."""
     j = int(nearest[hi])
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if hi + k >= len(a) or j + k >= len(b):
@@ -182,8 +181,11 @@ def _diverge(
         if d[hi + k].min() > APART and d[:, j + k].min() > APART:
             if _turn(hb[j], hb[j + k]) <= _turn(ha[hi], ha[hi + k]):
                 return None  # the striker is the one that leaves: its front moves away from the victim
+            angle = max(_turn(ha[hi + k], hb[j + k]), 5.0)
+            if angle >= SHALLOW:
+                return hi * STEP, j * STEP, angle  # turned away steeply: its side is what is hit
             out = next((i for i in range(hi, hi + k + 1) if d[i].min() >= half_width), hi)
-            return out * STEP, float(nearest[out]) * STEP + rear, max(_turn(ha[hi + k], hb[j + k]), 5.0)
+            return out * STEP, float(nearest[out]) * STEP + rear, angle
     return None
 
 
@@ -197,7 +199,8 @@ def _swerve_into(
         if lo < k:
             return None
         if d[lo - k].min() > APART:
-            back = next((i for i in range(lo, max(-1, lo - int(APART_WITHIN / STEP)), -1) if d[i].min() >= gap), lo)
+            back = _apart_before(d, lo, gap)
+            back = lo if back is None else back
             return back * STEP, float(nearest[back]) * STEP, _turn(ha[lo - k], hb[int(nearest[lo])])
     return None
 
