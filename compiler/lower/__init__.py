@@ -155,6 +155,14 @@ def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: 
     meet = _meeting_move(victim, striker, crash)
     if meet is not None:
         out.append((scenario, {victim_id: meet}, None))
+    if crash is CrashType.SIDE:
+        joined, who = _into_partners_lane(scenario, striker, victim)
+        if who:
+            why = (
+                f"{who}'s turn ends in its partner's lane, where they meet side-on: "
+                "the lane the report names keeps them apart on this site"
+            )
+            out.append((joined, {}, why))
     if crash is CrashType.FRONTAL:
         # Fronts also meet where one turns across the other's path at a wide angle (at a T, a
         # car turning out of the stem and one turning into the road it crosses): the other
@@ -206,6 +214,30 @@ def _without_turn_lanes(scenario: Scenario, ids: tuple[str, ...]) -> Scenario:
             changed = True
         participants.append(p)
     return replace(scenario, participants=tuple(participants)) if changed else scenario
+
+
+def _into_partners_lane(scenario: Scenario, *pair: Participant) -> tuple[Scenario, str]:
+    """The scenario with a turner's target lane made its partner's, when both leave the junction
+    the same way in different lanes (and which participant that was, or '')."""
+    for p, partner in (pair, pair[::-1]):
+        ends, lane = _final_heading(p), _final_lane(partner)
+        move = next((a for a in p.known_actions if a.kind in JUNCTION_MOVES), None)
+        if move is None or ends is None or ends != _final_heading(partner) or lane is None or move.to == lane:
+            continue
+        actions = tuple(replace(a, to=lane) if a is move else a for a in p.known_actions)
+        people = tuple(replace(q, actions=actions) if q.id == p.id else q for q in scenario.participants)
+        return replace(scenario, participants=people), p.id
+    return scenario, ""
+
+
+def _final_lane(p: Participant) -> int | None:
+    """The lane a vehicle drives on after the junction, as far as the report says."""
+    last = [a.to for a in p.known_actions if a.kind in JUNCTION_MOVES and isinstance(a.to, int)]
+    if last:
+        return last[-1]
+    if any(a.kind in JUNCTION_MOVES for a in p.known_actions):
+        return None
+    return p.lane if isinstance(p.lane, int) else None
 
 
 def _limit(scenario: Scenario, notes: list[str]) -> tuple[float, Fact]:

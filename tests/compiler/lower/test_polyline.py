@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from sovarc.compiler.lower.polyline import Polyline
 
@@ -14,9 +14,9 @@ point = st.tuples(coordinate, coordinate)
 @settings(max_examples=60, deadline=None)
 @given(st.lists(point, min_size=2, max_size=8, unique=True), st.lists(point, min_size=1, max_size=30))
 def test_distances_match_project_point_by_point(shape: list, points: list) -> None:
+    steps = np.hypot(*np.diff(np.asarray(shape), axis=0).T)
+    assume(bool((steps > 1e-3).all()))  # a polyline's consecutive points are distinct
     line = Polyline(np.asarray(shape))
-    if line.length == 0.0:
-        return
     many = line.distances(np.asarray(points))
     one_by_one = [line.project(p)[1] for p in points]
     assert np.allclose(many, one_by_one, atol=1e-6)
