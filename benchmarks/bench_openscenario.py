@@ -180,12 +180,6 @@ CLASSES |= {f"{c} (OSC only)": why for c, why in OSC_ONLY.items()}
 
 # Known causes of faces named differently at the same first touch (SUMO's in targets/sumo/bodies.first_touch).
 FACE_CAUSES = {
-    "side named a rear corner": (
-        "SUMO's oracle takes a body's main face from the direction between the nearest points, and when its "
-        "bisection leaves them under 1e-9 m apart, from the direction between the centres: a striker beside and "
-        "behind the victim then meets its 'rear', and a point on the side near its middle becomes a rear corner. "
-        "The OSC oracle names faces by where the contact point lies on each body"
-    ),
     "flat contact": (
         "the faces meet flat (headings within 1°): where along the touching stretch the contact lies turns on "
         "sub-millimetre differences in pose (SUMO judges its replayed poses, the OSC oracle the file's) and on "
@@ -199,9 +193,6 @@ def _face_cause(sumo: dict[str, Any], osc: dict[str, Any]) -> str:
     """Which of FACE_CAUSES explains faces named differently ('unexplained' if none)."""
     if osc["first_contact_time"] == 0.0:
         return "overlapping from the start"
-    s_victim, o_victim = sumo["victim_face"].split("-"), osc["victim_face"].split("-")
-    if o_victim in (["left"], ["right"]) and s_victim == ["rear", *o_victim]:
-        return "side named a rear corner"
     if min(sumo["angle"], 180.0 - sumo["angle"]) <= 1.0:
         return "flat contact"
     return "unexplained"

@@ -23,7 +23,7 @@ from sovarc.compiler.lower.solve import V_PED_MAX, ConflictError, Fact, Problem,
 from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites, scenario_needs, site_rotations
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.dsl.errors import Diagnostic, LoweringError, Severity, UnsatError
-from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, RoadKind, Role, Scenario, Side, Speed
+from sovarc.dsl.ir import Action, ActionKind, CrashType, Heading, Participant, RoadKind, Role, Scenario, Side, Speed
 from sovarc.dsl.printer import format_speed
 
 DEFAULT_LIMIT_KMH = {RoadKind.STRAIGHT: 70.0, RoadKind.INTERSECTION: 50.0, RoadKind.T_JUNCTION: 50.0}
@@ -168,9 +168,9 @@ def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: 
         # car turning out of the stem and one turning into the road it crosses): the other
         # unnamed junction moves, of one car or of both, before the site's other rotations.
         seen = [{pid: kind for pid, (kind, _) in moves.items()} for _, moves, _ in out]
+        partner = {striker_id: victim_id, victim_id: striker_id}
         for kinds in _move_choices(striker, victim):
             if kinds and kinds not in seen:
-                partner = {striker_id: victim_id, victim_id: striker_id}
                 why = {pid: (kind, f"to cross {partner[pid]}'s path front to front") for pid, kind in kinds.items()}
                 out.append((scenario, why, None))
     return out
@@ -221,7 +221,7 @@ def _into_partners_lane(scenario: Scenario, *pair: Participant) -> tuple[Scenari
     the same way in different lanes (and which participant that was, or '')."""
     for p, partner in (pair, pair[::-1]):
         ends, lane = _final_heading(p), _final_lane(partner)
-        move = next((a for a in p.known_actions if a.kind in JUNCTION_MOVES), None)
+        move = _junction_move(p)
         if move is None or ends is None or ends != _final_heading(partner) or lane is None or move.to == lane:
             continue
         actions = tuple(replace(a, to=lane) if a is move else a for a in p.known_actions)
@@ -235,9 +235,14 @@ def _final_lane(p: Participant) -> int | None:
     last = [a.to for a in p.known_actions if a.kind in JUNCTION_MOVES and isinstance(a.to, int)]
     if last:
         return last[-1]
-    if any(a.kind in JUNCTION_MOVES for a in p.known_actions):
+    if _junction_move(p) is not None:
         return None
     return p.lane if isinstance(p.lane, int) else None
+
+
+def _junction_move(p: Participant) -> Action | None:
+    """A participant's first junction move, if its actions name one."""
+    return next((a for a in p.known_actions if a.kind in JUNCTION_MOVES), None)
 
 
 def _limit(scenario: Scenario, notes: list[str]) -> tuple[float, Fact]:
@@ -312,12 +317,7 @@ def _routes(
 def _move_choices(*people: Participant) -> list[dict[str, ActionKind]]:
     """Every choice of junction move for those of `people` whose actions name none."""
     moves = (ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT, ActionKind.GO_ACROSS)
-    free = [
-        (None, *moves)
-        if p.role is Role.VEHICLE and not any(a.kind in JUNCTION_MOVES for a in p.known_actions)
-        else (None,)
-        for p in people
-    ]
+    free = [(None, *moves) if p.role is Role.VEHICLE and _junction_move(p) is None else (None,) for p in people]
     return [
         {p.id: kind for p, kind in zip(people, combo, strict=True) if kind is not None}
         for combo in itertools.product(*free)
@@ -329,7 +329,7 @@ def _meeting_move(p: Participant, partner: Participant, crash: CrashType) -> tup
     partner the way the crash type says (head-on: leave facing the partner's way back)."""
     if crash not in (CrashType.FRONTAL, CrashType.REAR_END) or Role.PEDESTRIAN in (p.role, partner.role):
         return None
-    if any(a.kind in JUNCTION_MOVES for a in p.known_actions):
+    if _junction_move(p) is not None:
         return None
     mine, theirs = _final_heading(p), _final_heading(partner)
     if mine is None or theirs is None:

@@ -174,17 +174,20 @@ def _wrong_way(p: Participant) -> bool:
     return any(a.kind is ActionKind.RETROGRADE for a in p.known_actions)
 
 
+_TURN_SIDES = {ActionKind.TURN_RIGHT: Side.RIGHT, ActionKind.TURN_LEFT: Side.LEFT}
+
+
+def _first_turn(p: Participant) -> Side | None:
+    """The side of a participant's first left or right turn, if it makes one."""
+    return next((_TURN_SIDES[a.kind] for a in p.known_actions if a.kind in _TURN_SIDES), None)
+
+
 def _same_turn(p: Participant, partner: Participant) -> bool:
     """Both turn, and their first turns go the same way."""
-    turns = {ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT}
-    mine = [a.kind for a in p.known_actions if a.kind in turns]
-    theirs = [a.kind for a in partner.known_actions if a.kind in turns]
-    return bool(mine and theirs) and mine[0] is theirs[0]
+    mine = _first_turn(p)
+    return mine is not None and mine is _first_turn(partner)
 
 
 def _cuts_across(p: Participant, partner: Participant) -> Side | None:
     """The side p turns to when it turns and its partner, going the same way, does not."""
-    turns = {ActionKind.TURN_RIGHT: Side.RIGHT, ActionKind.TURN_LEFT: Side.LEFT}
-    mine = [turns[a.kind] for a in p.known_actions if a.kind in turns]
-    theirs = [a for a in partner.known_actions if a.kind in turns]
-    return mine[0] if mine and not theirs else None
+    return _first_turn(p) if _first_turn(partner) is None else None

@@ -9,6 +9,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
+from sovarc.compiler.maps.geometry import distances_to
 
 Point = tuple[float, float]
 
@@ -38,9 +39,7 @@ class Polyline:
 
     def heading(self, s: float) -> float:
         """Direction of travel at arc length s (of the segment containing it)."""
-        k = int(np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, len(self.s) - 2))
-        dx, dy = self.points[k + 1] - self.points[k]
-        return math.degrees(math.atan2(dx, dy)) % 360.0
+        return float(self._headings(np.array([s]))[0])
 
     def sub(self, start: float, end: float) -> Polyline:
         """The part between two arc lengths (start < end)."""
@@ -89,12 +88,7 @@ class Polyline:
 
     def distances(self, points: np.ndarray) -> np.ndarray:
         """For each of `points` (n x 2), its distance to the line: `project` for many points at once."""
-        a, ab = self.points[:-1], self.points[1:] - self.points[:-1]
-        lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
-        rel = points[:, None, :] - a[None, :, :]  # n x segments x 2
-        u = np.clip((rel * ab[None, :, :]).sum(axis=2) / lengths2, 0.0, 1.0)
-        gap = rel - ab[None, :, :] * u[:, :, None]
-        return np.hypot(gap[:, :, 0], gap[:, :, 1]).min(axis=1)
+        return distances_to(self.points, points)
 
     def offset(self, lateral: float) -> Polyline:
         """The polyline shifted sideways, to the right of travel for positive `lateral`."""
@@ -113,7 +107,7 @@ class Polyline:
         return radii
 
     def _headings(self, at: np.ndarray) -> np.ndarray:
-        """`heading` at many arc lengths."""
+        """`heading` at many arc lengths: compass degrees of the segments containing them."""
         k = np.clip(np.searchsorted(self.s, at, side="right") - 1, 0, len(self.s) - 2)
         d = self.points[k + 1] - self.points[k]
         return np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0

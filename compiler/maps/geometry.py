@@ -10,6 +10,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 Point = tuple[float, float]
 Shape = tuple[Point, ...]
 
@@ -45,15 +47,14 @@ def point_at(shape: Sequence[Point], s: float) -> Point:
     return shape[-1]
 
 
-def distance_to(shape: Sequence[Point], p: Point) -> float:
-    """The shortest distance from `p` to the polyline."""
-    best = math.inf
-    for a, b in itertools.pairwise(shape):
-        dx, dy = b[0] - a[0], b[1] - a[1]
-        span = dx * dx + dy * dy
-        t = 0.0 if span == 0.0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / span))
-        best = min(best, math.dist(p, (a[0] + t * dx, a[1] + t * dy)))
-    return best
+def distances_to(shape: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """For each of `points` (n x 2), its shortest distance to the polyline `shape` (m x 2)."""
+    a, ab = shape[:-1], shape[1:] - shape[:-1]
+    lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
+    rel = points[:, None, :] - a[None, :, :]  # n x segments x 2
+    u = np.clip((rel * ab[None, :, :]).sum(axis=2) / lengths2, 0.0, 1.0)
+    gap = rel - ab[None, :, :] * u[:, :, None]
+    return np.hypot(gap[:, :, 0], gap[:, :, 1]).min(axis=1)
 
 
 def heading_between(p: Point, q: Point) -> float:

@@ -21,11 +21,12 @@ import statistics
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
 from sovarc.compiler.maps.geometry import (
     Point,
     Shape,
     angle_diff,
-    distance_to,
+    distances_to,
     end_heading,
     fit_frame,
     heading_between,
@@ -295,7 +296,8 @@ def _median(there: tuple[LaneInfo, ...], back: tuple[LaneInfo, ...]) -> float:
     """The gap between the two directions' inner (left-most) car lanes, at the middle of the road."""
     inner, other = there[-1], back[-1]
     middle = point_at(inner.shape, shape_length(inner.shape) / 2.0)
-    return distance_to(other.shape, middle) - (inner.width + other.width) / 2.0
+    gap = distances_to(np.asarray(other.shape), np.asarray([middle]))[0]
+    return float(gap) - (inner.width + other.width) / 2.0
 
 
 def _reverse_of(edge: Any, used: set[str], lanes: _Lanes) -> Any | None:

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from sovarc.compiler.maps.geometry import (
     angle_diff,
     compass,
-    distance_to,
+    distances_to,
     end_heading,
     fit_frame,
     max_kink,
@@ -78,7 +79,7 @@ def test_more_than_four_arms_is_refused() -> None:
 
 
 def test_distance_to_a_polyline_is_to_its_nearest_segment_or_end() -> None:
-    line = [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)]
-    assert distance_to(line, (5.0, 3.0)) == pytest.approx(3.0)  # above the first segment
-    assert distance_to(line, (13.0, 5.0)) == pytest.approx(3.0)  # beside the second
-    assert distance_to(line, (-3.0, -4.0)) == pytest.approx(5.0)  # past the start: to the end point
+    line = np.array([(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)])
+    points = np.array([(5.0, 3.0), (13.0, 5.0), (-3.0, -4.0)])
+    # above the first segment; beside the second; past the start, to the end point
+    assert distances_to(line, points) == pytest.approx([3.0, 3.0, 5.0])
