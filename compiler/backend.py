@@ -5,17 +5,23 @@ results = compile_sites(scenario, "town.net.xml", roads=3, seed=0, targets=("sum
 Per site it writes `out/<site>/plan.txt`, `plan.json` and `plan.png`, then each target's
 files and `verdict-<target>.json`. A site that cannot be staged (unsat, synthesis) is a
 result with its error, not an exception: the other sites still run.
+
+A chosen site that cannot host the crash (a frontal crash where the site's roads cross at right
+angles, an arm too short to change lanes on) is replaced by the next site in the search's order,
+up to `spare` extra tries per run; the sites given up are kept on the result that replaced them
+(`SiteResult.skipped`), so every output says where the crash could not be staged and why.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.maps import RoadMap, load_map
+from sovarc.compiler.maps import RoadMap, SiteMatch, load_map
 from sovarc.compiler.plan import Plan, dump_plan
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import Scenario
@@ -31,6 +37,12 @@ class SiteResult:
     error: SovarcError | None = None
     verdicts: dict[str, Any] = field(default_factory=dict)  # target -> Verdict (fmu: a list of them)
     folder: Path | None = None
+    skipped: list[SiteResult] = field(default_factory=list)  # sites tried first for this slot, which failed
+
+
+def default_spare(roads: int) -> int:
+    """Extra sites tried per run when chosen ones cannot host the crash: twice the sites asked for."""
+    return 2 * roads
 
 
 def default_map() -> Path:
@@ -39,21 +51,54 @@ def default_map() -> Path:
     return DEFAULT_MAP
 
 
-def plans_for(scenario: Scenario, road_map: RoadMap, roads: int, seed: int) -> list[SiteResult]:
-    """Lower and synthesize on up to `roads` sites; a site's failure is kept as its result."""
+def plans_for(
+    scenario: Scenario, road_map: RoadMap, roads: int, seed: int, spare: int | None = None
+) -> list[SiteResult]:
+    """Lower and synthesize on up to `roads` sites, trying up to `spare` more (default:
+    `default_spare`) in place of sites that fail; a slot no site could fill keeps its first failure."""
     from sovarc.compiler.lower import lower_on, sites_for
     from sovarc.compiler.synth import synthesize
 
-    staged, notes, matches = sites_for(scenario, road_map, roads=roads, seed=seed)
-    results = []
-    for match in matches:
+    spare = default_spare(roads) if spare is None else spare
+    staged, notes, matches = sites_for(scenario, road_map, roads=roads + spare, seed=seed)
+
+    def attempt(match: SiteMatch) -> SiteResult:
         result = SiteResult(match.site.id)
         try:
             result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
         except SovarcError as exc:
             result.error = exc
-        results.append(result)
-    return results
+        return result
+
+    return fill_slots(matches, roads, attempt)
+
+
+def fill_slots(
+    candidates: Sequence[SiteMatch], roads: int, attempt: Callable[[SiteMatch], SiteResult]
+) -> list[SiteResult]:
+    """Attempt candidates in order until `roads` slots hold a plan or the candidates run out.
+
+    The first `roads` candidates take the slots; each later one is tried only while a slot has
+    failed, and a success takes the first failed slot, keeping what it replaced in `skipped`.
+    The order of the slots is the order of their first candidates, so output is deterministic.
+    """
+    slots: list[SiteResult] = []
+    for match in candidates:
+        if len(slots) < roads:
+            slots.append(attempt(match))
+            continue
+        failed = next((i for i, slot in enumerate(slots) if slot.plan is None), None)
+        if failed is None:
+            break
+        result = attempt(match)
+        held = slots[failed]
+        if result.plan is None:
+            held.skipped.append(result)
+        else:
+            result.skipped = [held, *held.skipped]
+            held.skipped = []
+            slots[failed] = result
+    return slots
 
 
 def compile_sites(
@@ -62,13 +107,14 @@ def compile_sites(
     *,
     roads: int = 1,
     seed: int = 0,
+    spare: int | None = None,
     targets: tuple[str, ...] = (),
     out_dir: str | Path | None = None,
     ego: str | None = None,
     osc_version: str | None = None,
 ) -> list[SiteResult]:
     road_map = load_map(map_path or default_map())
-    results = plans_for(scenario, road_map, roads, seed)
+    results = plans_for(scenario, road_map, roads, seed, spare)
     for result in results:
         if out_dir is None:
             continue
@@ -135,8 +181,7 @@ def summary(results: list[SiteResult], targets: tuple[str, ...]) -> str:
     rows = [header]
     for r in results:
         if r.plan is None:
-            reason = r.error.diagnostics[0].message if r.error else "failed"
-            rows.append([r.site, "planning failed: " + reason[:70]] + ["-"] * len(targets))
+            rows.append([r.site, "planning failed: " + first_message(r.error)[:70]] + ["-"] * len(targets))
             continue
         cells = [r.site, f"{r.plan.impact.time:.1f} s"]
         for t in targets:
@@ -147,4 +192,22 @@ def summary(results: list[SiteResult], targets: tuple[str, ...]) -> str:
                 cells.append("-" if verdict is None else ("pass" if passed(verdict) else "FAIL"))
         rows.append(cells)
     widths = [max(len(row[i]) for row in rows) for i in range(len(header))]
-    return "\n".join("  ".join(c.ljust(w) for c, w in zip(row, widths, strict=True)).rstrip() for row in rows) + "\n"
+    table = "\n".join("  ".join(c.ljust(w) for c, w in zip(row, widths, strict=True)).rstrip() for row in rows)
+    return table + "\n" + "".join(skipped_lines(results))
+
+
+def skipped_lines(results: list[SiteResult]) -> list[str]:
+    """One line per site given up for another: which, why, and what replaced it."""
+    lines = []
+    for r in results:
+        for s in r.skipped:
+            why = first_message(s.error)
+            if r.plan is not None:
+                lines.append(f"note: {s.site} could not host the crash ({why}); staged on {r.site}\n")
+            else:
+                lines.append(f"note: {s.site}, tried in place of {r.site}, failed too ({why})\n")
+    return lines
+
+
+def first_message(error: SovarcError | None) -> str:
+    return error.diagnostics[0].message if error is not None and error.diagnostics else str(error or "failed")

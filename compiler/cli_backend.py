@@ -9,7 +9,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
-from sovarc.compiler.backend import TARGETS, compile_sites, default_map, passed, plans_for, summary
+from sovarc.compiler.backend import TARGETS, compile_sites, default_map, first_message, passed, plans_for, summary
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.progress import progress
@@ -25,6 +25,24 @@ FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "r
 def add_site_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-m", "--map", help="road network, .net.xml or .xodr (default: the bundled example town)")
     parser.add_argument("--roads", type=int, default=1, metavar="N", help="stage on N distinct sites (default 1)")
+    add_spare_option(parser)
+
+
+def add_spare_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--spare-sites",
+        type=_not_negative,
+        metavar="K",
+        help="when a chosen site cannot host the crash, try up to K more sites in its place, each one noted "
+        "with its reason (default: twice --roads; 0 keeps the first choice, failures and all)",
+    )
+
+
+def _not_negative(value: str) -> int:
+    number = int(value)
+    if number < 0:
+        raise argparse.ArgumentTypeError(f"must be 0 or more, not {number}")
+    return number
 
 
 def target_names(value: str) -> tuple[str, ...]:
@@ -43,6 +61,7 @@ def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
         args.map,
         roads=args.roads,
         seed=args.seed,
+        spare=args.spare_sites,
         targets=args.target,
         out_dir=out,
         ego=args.ego,
@@ -59,7 +78,7 @@ def print_plans(scenario: Scenario, args: argparse.Namespace) -> int:
     """`--dump-ir-after=lower`: the plan of each site in its text form."""
     from sovarc.compiler.plan_text import render_plan
 
-    results = plans_for(scenario, load_map(args.map or default_map()), args.roads, args.seed)
+    results = plans_for(scenario, load_map(args.map or default_map()), args.roads, args.seed, args.spare_sites)
     for r in results:
         print(f"// ----- plan on {r.site} -----")
         if r.plan is not None:
@@ -103,6 +122,7 @@ def add_srr_parser(which: Any, formatter: Any) -> None:
     srr.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
     srr.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
     srr.add_argument("--roads", type=int, default=3, metavar="N", help="sites per scenario (default 3)")
+    add_spare_option(srr)
     srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
     srr.add_argument("--json", help="also write every scenario-site's result here")
 
@@ -113,7 +133,9 @@ def cmd_lower(args: argparse.Namespace) -> int:
 
     scenario, _ = load_scenario(args.input)
     verify_or_raise(scenario)
-    results = compile_sites(scenario, args.map, roads=args.roads, seed=args.seed, out_dir=args.output)
+    results = compile_sites(
+        scenario, args.map, roads=args.roads, seed=args.seed, spare=args.spare_sites, out_dir=args.output
+    )
     for r in results:
         if r.error is not None:
             print(r.error.render(), file=sys.stderr)
@@ -148,7 +170,7 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
             scenario, _ = load_scenario(path)
             kind = scenario.road.kind.value if hasattr(scenario.road.kind, "value") else "unknown"
             try:
-                results = plans_for(scenario, road_map, args.roads, args.seed)
+                results = plans_for(scenario, road_map, args.roads, args.seed, args.spare_sites)
             except Exception as exc:  # no fitting site: every requested site failed to plan
                 results = []
                 reason = getattr(exc, "diagnostics", None)
@@ -157,17 +179,15 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
                 continue
             for r in results:
                 if r.plan is None:
-                    message = r.error.diagnostics[0].message if r.error else ""
-                    rows.append(_row(path, kind, r.site, "planning failed", message))
-                    continue
-                try:
-                    verdict = sumo.check(r.plan)
-                except SovarcError as error:  # SUMO refused the scenario: counted, and the batch goes on
-                    rows.append(_row(path, kind, r.site, "replay error", str(error)))
-                    continue
-                failure = classify(verdict)
-                reasons = "; ".join(f.message for f in verdict.failures)
-                rows.append(_row(path, kind, r.site, failure, reasons))
+                    rows.append(_row(path, kind, r.site, "planning failed", first_message(r.error)))
+                else:
+                    try:
+                        verdict = sumo.check(r.plan)
+                        failure = classify(verdict)
+                        rows.append(_row(path, kind, r.site, failure, "; ".join(f.message for f in verdict.failures)))
+                    except SovarcError as error:  # SUMO refused the scenario: counted, and the batch goes on
+                        rows.append(_row(path, kind, r.site, "replay error", str(error)))
+                rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
             missing = args.roads - len(results)
             rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
         report[Path(map_path).name] = {"rows": rows}
@@ -191,6 +211,10 @@ def _srr_table(name: str, rows: list[dict[str, object]]) -> str:
         lines.append(f"  {kind:<14}{100.0 * ok / max(1, len(chosen)):7.1f}%  {ok}/{len(chosen)}")
     counts = Counter(str(r["failure"]) for r in rows if not r["passed"])
     lines.append("  failures: " + ", ".join(f"{c} {counts[c]}" for c in FAILURE_CLASSES))
+    replaced = sum(1 for r in rows if r.get("skipped") and r["failure"] != "planning failed")
+    given_up = sum(len(r.get("skipped", ())) for r in rows)  # type: ignore[arg-type]
+    if given_up:
+        lines.append(f"  sites that could not host their crash: {given_up}; slots filled by another site: {replaced}")
     return "\n".join(lines) + "\n"
 
 

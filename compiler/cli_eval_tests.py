@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.backend import default_map, folder_name, plans_for
+from sovarc.compiler.cli_backend import add_spare_option
 from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.compiler.progress import progress
 from sovarc.dsl.errors import EXIT_OK, InputError, SovarcError, SynthesisError, UnsatError
@@ -41,6 +42,7 @@ def add_tests_parser(which: Any, formatter: Any) -> None:
     tests.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
     tests.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
     tests.add_argument("--roads", type=_positive, default=3, metavar="N", help="sites per scenario (default 3)")
+    add_spare_option(tests)
     tests.add_argument(
         "--baseline", choices=("random", "none"), default="random", help="the baseline to compare with (default random)"
     )
@@ -68,7 +70,16 @@ def cmd_eval_tests(args: argparse.Namespace) -> int:
         name = Path(map_path).name
         out = Path(args.output) / folder_name(name) if args.output else None
         road_map = load_map(map_path)
-        table = tests_table(scenarios, road_map, ego, roads=args.roads, seed=args.seed, baseline=baseline, out_dir=out)
+        table = tests_table(
+            scenarios,
+            road_map,
+            ego,
+            roads=args.roads,
+            seed=args.seed,
+            spare=args.spare_sites,
+            baseline=baseline,
+            out_dir=out,
+        )
         report[name] = table.to_json()
         if not args.json:
             title = f"Ego failures of {ego.model_name} on {name}: {len(scenarios)} scenario(s) x {args.roads} site(s)"
@@ -87,6 +98,7 @@ def tests_table(
     *,
     roads: int,
     seed: int = 0,
+    spare: int | None = None,
     baseline: bool = True,
     out_dir: Path | None = None,
 ) -> TestsTable:
@@ -98,7 +110,7 @@ def tests_table(
     for scenario in progress(scenarios, len(scenarios), label=f"tests {road_map.name}"):
         kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
         try:
-            results = plans_for(scenario, road_map, roads, seed)
+            results = plans_for(scenario, road_map, roads, seed, spare)
         except SovarcError as exc:  # no site of its kind could be chosen
             for _ in range(roads):
                 table.add_unplanned(scenario.name, kind, "-", "no fitting site", _first(exc))

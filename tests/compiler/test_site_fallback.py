@@ -1,0 +1,105 @@
+"""A chosen site that cannot host the crash is replaced by the next one, and the output says so."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from sovarc.compiler.backend import SiteResult, fill_slots, plans_for, summary
+from sovarc.compiler.maps import load_map
+from sovarc.dsl import parse
+from sovarc.dsl.errors import Diagnostic, UnsatError
+from tests.compiler.test_cli import sovarc
+from tests.conftest import EXAMPLES
+
+# Both cars drive straight across and meet front to front: only a junction whose roads cross
+# obliquely (100 degrees or more between the paths) can host it; most of the town's cross at 90.
+OBLIQUE_FRONTAL = """\
+scenario oblique_frontal {
+  road { kind intersection lanes 1 speed_limit 48 km/h }
+  vehicle V1 { heading west lane 1 actions { follow_lane go_across } }
+  vehicle V2 { heading north lane 1 actions { follow_lane go_across } }
+  crash { type frontal striker V2 victim V1 }
+}
+"""
+
+
+@dataclass(frozen=True)
+class _Site:
+    id: str
+
+
+@dataclass(frozen=True)
+class _Match:
+    site: _Site
+
+
+def _attempts(good: set[str]) -> tuple[list[str], object]:
+    tried: list[str] = []
+
+    def attempt(match: _Match) -> SiteResult:
+        tried.append(match.site.id)
+        result = SiteResult(match.site.id)
+        if match.site.id in good:
+            result.plan = object()  # type: ignore[assignment]
+        else:
+            result.error = UnsatError(Diagnostic(f"{match.site.id} cannot"))
+        return result
+
+    return tried, attempt
+
+
+def _matches(*names: str) -> list[_Match]:
+    return [_Match(_Site(n)) for n in names]
+
+
+def test_failed_slots_are_filled_in_order_and_keep_what_they_replaced() -> None:
+    tried, attempt = _attempts({"a", "e", "f"})
+    slots = fill_slots(_matches("a", "b", "c", "d", "e", "f", "g"), 3, attempt)  # type: ignore[arg-type]
+    assert [s.site for s in slots] == ["a", "e", "f"]
+    assert [s.site for s in slots[1].skipped] == ["b", "d"]  # d was tried for b's slot, the first failed one
+    assert [s.site for s in slots[2].skipped] == ["c"]
+    assert tried == ["a", "b", "c", "d", "e", "f"]  # g is never tried: every slot holds a plan
+
+
+def test_a_slot_no_candidate_fills_keeps_its_first_failure() -> None:
+    tried, attempt = _attempts({"a"})
+    slots = fill_slots(_matches("a", "b", "c", "d"), 2, attempt)  # type: ignore[arg-type]
+    assert [s.site for s in slots] == ["a", "b"] and slots[1].plan is None
+    assert [s.site for s in slots[1].skipped] == ["c", "d"]
+    assert tried == ["a", "b", "c", "d"]
+
+
+def test_no_spare_keeps_the_first_choice() -> None:
+    tried, attempt = _attempts(set())
+    slots = fill_slots(_matches("a", "b"), 2, attempt)  # type: ignore[arg-type]
+    assert [s.site for s in slots] == ["a", "b"] and not slots[0].skipped and tried == ["a", "b"]
+
+
+def test_an_oblique_frontal_crash_moves_to_the_junctions_that_can_host_it() -> None:
+    town = load_map(EXAMPLES / "maps" / "town.net.xml")
+    scenario = parse(OBLIQUE_FRONTAL, "oblique.sov")
+    first = plans_for(scenario, town, 3, 0, spare=0)
+    spared = plans_for(scenario, town, 3, 0)
+    assert sum(r.plan is not None for r in spared) > sum(r.plan is not None for r in first)
+    assert [r.site for r in spared] == [r.site for r in plans_for(scenario, town, 3, 0)]  # deterministic
+    given_up = [s for r in spared for s in r.skipped]
+    assert given_up and all("paths cross at" in s.error.diagnostics[0].message for s in given_up)
+    planned = {r.site for r in spared if r.plan is not None}
+    assert not planned & {s.site for s in given_up}
+    notes = summary(spared, ())
+    assert all(f"note: {s.site} could not host the crash" in notes for s in given_up)
+
+
+def test_eval_srr_counts_the_sites_given_up(tmp_path: Path) -> None:
+    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
+    out = tmp_path / "srr.json"
+    spared = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--json", str(out))
+    assert spared.returncode == 0, spared.stderr
+    assert "sites that could not host their crash:" in spared.stdout
+    rows = json.loads(out.read_text(encoding="utf-8"))["town.net.xml"]["rows"]
+    assert any(row["skipped"] for row in rows) and all("reason" in s for row in rows for s in row["skipped"])
+    strict = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "0")
+    assert "could not host" not in strict.stdout
+    assert sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "-1").returncode == 2
