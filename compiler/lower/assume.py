@@ -3,7 +3,9 @@
 Lowering needs a heading, a lane and actions for every vehicle, and a crash type with its
 striker and victim. Each choice here follows from the facts that are known (a rear-end's
 vehicles share a heading, a head-on's oppose unless one of them turns back) and is
-returned as a note that ends up in the plan. Known facts are never changed.
+returned as a note that ends up in the plan. Known facts are never changed, but for one
+contradiction no site can stage: two cars crossing at right angles cannot both go straight
+across a T-junction, since one of them comes from its stem (`_across_a_t`).
 """
 
 from __future__ import annotations
@@ -67,6 +69,7 @@ def assume(scenario: Scenario) -> tuple[Scenario, list[str]]:
     # actions first: a heading's choice depends on them
     for pid, p in list(people.items()):
         people[pid] = _actions(p, known)
+    _across_a_t(known)
     for pid in (known.striker, known.victim, *people):
         p = people.get(pid)
         if p is not None and isinstance(p.heading, Unknown) and p.role is Role.VEHICLE:
@@ -121,6 +124,31 @@ def _actions(p: Participant, known: _Known) -> Participant:
     what = "unknown" if isinstance(p.actions, Unknown) else "none"
     known.notes.append(f"{p.id} actions {what}: planned as {chosen.value}")
     return replace(p, actions=(Action(chosen),))
+
+
+def _across_a_t(known: _Known) -> None:
+    """At a T, of two cars going straight across from crossing directions one comes from the
+    stem and must turn: the victim turns left, which crosses the near lane and enters the far
+    one, so it meets a striker from either side."""
+    a, b = known.people.get(known.striker), known.people.get(known.victim)
+    if known.kind is not RoadKind.T_JUNCTION or a is None or b is None or a.id == b.id:
+        return
+    if not (isinstance(a.heading, Heading) and isinstance(b.heading, Heading)):
+        return
+    if (COMPASS.index(a.heading) - COMPASS.index(b.heading)) % 2 == 0 or not (_goes_across(a) and _goes_across(b)):
+        return
+    left = ActionKind.TURN_LEFT
+    known.people[b.id] = replace(
+        b, actions=tuple(replace(x, kind=left) if x.kind is ActionKind.GO_ACROSS else x for x in b.known_actions)
+    )
+    known.notes.append(
+        f"{b.id} go_across: planned as turn_left, because {a.id} and {b.id} cross at right angles and a T-junction "
+        f"cannot take both straight across; the victim turns out of the stem"
+    )
+
+
+def _goes_across(p: Participant) -> bool:
+    return ActionKind.GO_ACROSS in [a.kind for a in p.known_actions]
 
 
 def _heading(p: Participant, known: _Known) -> Participant:

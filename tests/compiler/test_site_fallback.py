@@ -10,6 +10,7 @@ from sovarc.compiler.backend import SiteResult, fill_slots, plans_for, summary
 from sovarc.compiler.maps import load_map
 from sovarc.dsl import parse
 from sovarc.dsl.errors import Diagnostic, UnsatError
+
 from tests.compiler.test_cli import sovarc
 from tests.conftest import EXAMPLES
 

@@ -1,4 +1,5 @@
-"""Filling unknown facts: each unknown gets a choice and a note; known facts are never changed."""
+"""Filling unknown facts: each unknown gets a choice and a note; known facts are kept but for the one
+contradiction no site can stage (two cars straight across a T from crossing directions)."""
 
 from __future__ import annotations
 
@@ -146,3 +147,32 @@ def test_a_wrong_way_striker_side_swipes_an_oncoming_car() -> None:
     assert "V2 heading unknown: planned south (opposite to V1, whose wrong-way drive swerves into its lane)" in notes
     keeps = assume(parse(text.replace("retrograde", "follow_lane")))[0].participant("V2")
     assert keeps is not None and keeps.heading is Heading.NORTH  # no wrong-way drive: same way, as before
+
+
+ACROSS_A_T = """scenario across_a_t {
+  road { kind t_junction lanes 1 speed_limit 72 km/h }
+  vehicle V1 { heading south lane 1 actions { follow_lane go_across } }
+  vehicle V2 { heading east lane 1 actions { follow_lane go_across } }
+  crash { type side striker V1 victim V2 }
+}
+"""
+
+
+def test_two_cars_straight_across_a_t_make_the_victim_turn_out_of_the_stem() -> None:
+    original = parse(ACROSS_A_T)
+    filled, notes = assume(original)
+    v2 = filled.participant("V2")
+    assert v2 is not None and [a.kind for a in v2.known_actions] == [ActionKind.FOLLOW_LANE, ActionKind.TURN_LEFT]
+    assert v2.known_actions[1].meta == original.participant("V2").known_actions[1].meta  # its source span stays
+    assert filled.participant("V1") == original.participant("V1")
+    assert any(n.startswith("V2 go_across: planned as turn_left") for n in notes)
+
+
+def test_straight_across_stays_where_the_road_or_headings_allow_it() -> None:
+    for text in (
+        ACROSS_A_T.replace("kind t_junction", "kind intersection"),  # a 4-way junction has both roads through
+        ACROSS_A_T.replace("heading east", "heading north"),  # opposite directions: both on the through road
+    ):
+        original = parse(text)
+        filled, notes = assume(original)
+        assert filled.participants == original.participants and not notes
