@@ -27,12 +27,15 @@ sovarc compiles a police crash report into executable driving-test scenarios.
   report.txt --extract--> scenario IR (.sov) --lower--> plan --synthesize--> trajectories --emit--> targets
 
 The main job takes a report (or a .sov scenario) and a target:
+  sovarc examples/reports/left_turn_oncoming_pickup.txt -t sumo --roads 3 -o out
+                                     stage on 3 sites of the bundled town, replay each in SUMO
   sovarc examples/reports/left_turn_oncoming_pickup.txt       extract, verify, print the IR
   sovarc examples/scenarios/straight_rear_end_stopped_traffic.sov --dump-ir-after=read
 
 Front end and evaluation:
   sovarc extract examples/reports/*.txt -o out/          one .sov per report
   sovarc eval extraction --reports DIR --truth DIR       accuracy per attribute (the paper's Table 3)
+  sovarc eval srr truth/ -m MAP --roads 3                reconstruction rate in SUMO (Tables 4 and 5)
 
 Tools for the scenario IR:
   sovarc check examples/scenarios/*.sov     report every error and warning, compiler style
