@@ -37,7 +37,7 @@ def main() -> None:
     parser.add_argument("truth", type=Path)
     parser.add_argument("-m", "--map", type=Path, default=ROOT / "examples" / "maps" / "town.net.xml")
     parser.add_argument("--roads", type=int, default=3)
-    parser.add_argument("--spare", type=int, help="extra sites tried per scenario (default: twice --roads)")
+    parser.add_argument("--spare", type=int, help="extra sites tried per scenario (default: three times --roads)")
     args = parser.parse_args()
     spare = default_spare(args.roads) if args.spare is None else args.spare
     road_map = load_map(args.map)

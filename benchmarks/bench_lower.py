@@ -8,7 +8,7 @@ every site is timed on its own) of the example town and of SUMO's DRT demo city 
 (OpenStreetMap, shipped with the eclipse-sumo wheel). A scenario-site succeeds when both lowering
 and synthesis succeed; a map with fewer than 3 fitting sites counts the missing ones as failures.
 As `sovarc` does, a site that cannot host the crash is replaced by the next one the search offers,
-up to `--spare` more tries per scenario (default: the CLI's, twice the sites); `--spare 0` measures
+up to `--spare` more tries per scenario (default: the CLI's, three times the sites); `--spare 0` measures
 the first choice alone. A slot's time includes the tries it gave up.
 Site search (`match_sites`) is timed separately, cold (finding the map's sites) and warm (cached).
 """

@@ -34,7 +34,7 @@ def add_spare_option(parser: argparse.ArgumentParser) -> None:
         type=_not_negative,
         metavar="K",
         help="when a chosen site cannot host the crash, try up to K more sites in its place, each one noted "
-        "with its reason (default: twice --roads; 0 keeps the first choice, failures and all)",
+        "with its reason (default: three times --roads; 0 keeps the first choice, failures and all)",
     )
 
 
