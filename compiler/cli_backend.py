@@ -67,7 +67,9 @@ def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
         ego=args.ego,
         osc_version=args.osc_version,
     )
-    print(summary(results, args.target), end="")
+    table = summary(results, args.target)
+    write_atomic(out / "summary.txt", table)  # the sites given up, and why, are in no site's folder
+    print(table, end="")
     print(f"written to {out}/", file=sys.stderr)
     # A failed ego test (fmu) is a finding about the driving system, not a failure of the run.
     ok = all(r.plan is not None and all(passed(v) for t, v in r.verdicts.items() if t != "fmu") for r in results)
@@ -139,7 +141,9 @@ def cmd_lower(args: argparse.Namespace) -> int:
     for r in results:
         if r.error is not None:
             print(r.error.render(), file=sys.stderr)
-    print(summary(results, ()), end="")
+    table = summary(results, ())
+    write_atomic(Path(args.output) / "summary.txt", table)
+    print(table, end="")
     return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
 
 

@@ -104,3 +104,12 @@ def test_eval_srr_counts_the_sites_given_up(tmp_path: Path) -> None:
     strict = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "0")
     assert "could not host" not in strict.stdout
     assert sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "-1").returncode == 2
+
+
+def test_the_output_folder_says_which_sites_were_given_up(tmp_path: Path) -> None:
+    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
+    result = sovarc("lower", str(tmp_path / "oblique.sov"), "--roads", "3", "-o", str(tmp_path / "out"))
+    written = (tmp_path / "out" / "summary.txt").read_text(encoding="utf-8")
+    assert written == result.stdout and "could not host the crash" in written
+    given_up = [line.split()[1] for line in written.splitlines() if line.startswith("note:")]
+    assert given_up and not any((tmp_path / "out" / name.replace(":", "_")).exists() for name in given_up)
