@@ -9,12 +9,13 @@ or entering it from a driveway. Each action takes a stretch of the line, recorde
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import change_length
+from sovarc.compiler.lower.uturn import Band, layout, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
+from sovarc.compiler.plan import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
@@ -147,18 +148,39 @@ class Drive:
         return end
 
     def u_turn(self, index: int, at: float, to: int | Side | None) -> float:
-        number = to if isinstance(to, int) else len(self.corridor.other if not self.against else self.corridor.own)
-        heading = self.line.heading(at)
+        """Turn back on a half circle that keeps the body on the road (see uturn.py), into lane
+        `to` of the other direction; without one, into the lane the turn reaches most easily
+        (the one by the centre line, unless the road is too narrow to turn into it)."""
+        band = Band.across(self.corridor.own, self.corridor.other)
+        self.lanes.update(lane.id for lane in self.corridor.own + self.corridor.other)  # the whole road
         p0 = self.line.point(at)
         self.corridor = self.corridor.turned()
+        count = len(self.corridor.other if self.against else self.corridor.own)
+        numbers = [_clamp(to, count)] if isinstance(to, int) else [count, *range(1, count)]
+        options = []
+        for number in numbers:
+            line = self.corridor.other_line(number) if self.against else self.corridor.own_line(number)
+            d_to = band.place(line.point(line.project(p0)[0]))[1]
+            plan = layout(band, band.place(p0)[1], d_to, CAR)
+            options.append((abs(plan.d1 - d_to), number, d_to, plan))
+        _, number, d_to, plan = min(options, key=lambda option: option[0])
+        if not plan.fits:
+            width = band.left - band.right
+            raise LoweringError(
+                Diagnostic(
+                    f"action {index + 1}: the road is {width:.1f} m wide, too narrow for a U-turn in one sweep "
+                    "(a three-point turn, which plans do not carry)"
+                )
+            )
+        if number != numbers[0]:
+            self.notes.append(
+                f"action {index + 1}: the road is too narrow to U-turn into lane {numbers[0]}; turns into lane {number}"
+            )
         target = self._target(number, self.against)
-        s1, _ = target.project(p0)
-        p1 = target.point(s1)
-        arc = bezier(p0, heading, p1, heading + 180.0, samples=24, reach=max(math.dist(p0, p1) * 0.9, 3.0))
+        turn, arc_end = u_turn_line(band, self.line, at, target, d_to, plan)
         head = self.line.sub(0.0, at)
-        tail = target.sub(s1, target.length)
-        self.line = concat([head, arc, tail])
-        end = head.length + arc.length
+        self.line = concat([head, turn])
+        end = head.length + arc_end
         self.stretches[index] = (at, end)
         return end
 
