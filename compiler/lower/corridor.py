@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import change_length
-from sovarc.compiler.lower.uturn import Band, layout, u_turn_line
+from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.plan import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
@@ -74,6 +74,7 @@ class Drive:
     start_off_road: bool = False
     left_road: bool = False
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
+    site: str = ""  # the site's id, for errors
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -157,29 +158,19 @@ class Drive:
         self.corridor = self.corridor.turned()
         count = len(self.corridor.other if self.against else self.corridor.own)
         numbers = [_clamp(to, count)] if isinstance(to, int) else [count, *range(1, count)]
-        options = []
-        for number in numbers:
-            line = self.corridor.other_line(number) if self.against else self.corridor.own_line(number)
-            d_to = band.place(line.point(line.project(p0)[0]))[1]
-            plan = layout(band, band.place(p0)[1], d_to, CAR)
-            options.append((abs(plan.d1 - d_to), number, d_to, plan))
-        _, number, d_to, plan = min(options, key=lambda option: option[0])
+        lines = [self.corridor.other_line(n) if self.against else self.corridor.own_line(n) for n in numbers]
+        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), CAR)
         if not plan.fits:
-            width = band.left - band.right
-            raise LoweringError(
-                Diagnostic(
-                    f"action {index + 1}: the road is {width:.1f} m wide, too narrow for a U-turn in one sweep "
-                    "(a three-point turn, which plans do not carry)"
-                )
-            )
+            raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}")
         if number != numbers[0]:
             self.notes.append(
                 f"action {index + 1}: the road is too narrow to U-turn into lane {numbers[0]}; turns into lane {number}"
             )
         target = self._target(number, self.against)
-        turn, arc_end = u_turn_line(band, self.line, at, target, d_to, plan)
+        turn, arc_end, joins = u_turn_line(band, p0, target, d_to, plan)
         head = self.line.sub(0.0, at)
-        self.line = concat([head, turn])
+        rest = [target.sub(joins, target.length)] if target.length - joins > 0.5 else []
+        self.line = concat([head, turn, *rest])
         end = head.length + arc_end
         self.stretches[index] = (at, end)
         return end

@@ -26,11 +26,14 @@ import numpy as np
 from sovarc.compiler.lower.polyline import Point, Polyline, unit
 from sovarc.compiler.maps import LaneInfo
 from sovarc.compiler.plan import Body
+from sovarc.dsl.errors import Diagnostic, UnsatError
 
 MIN_RADIUS = 4.0  # m, the front bumper's path at full lock (a car's 10-11 m kerb-to-kerb turning circle)
 MARGIN = 0.2  # m the body keeps from the road's edges
-SHIFT = 4.0  # m of road per metre moved across before and after the half circle
-MIN_SHIFT = 8.0  # m: the shortest move across
+SHIFT = 6.0  # m of road per metre moved across before and after the half circle
+MIN_SHIFT = 15.0  # m: the shortest move across (a short one swings the rear out)
+MAX_SHIFT = 60.0  # m: the longest
+NEAR = 1.0  # m: a half circle ending this close to the preferred lane turns into it
 TANGENT = 5.0  # m either side over which the band's direction is measured (curved roads)
 
 
@@ -79,6 +82,8 @@ class Layout:
     d0: float  # across the road, where the half circle begins
     d1: float  # where it ends, facing back
     fits: bool  # the body stays on the road with MARGIN to spare
+    before: float = 0.0  # m of road the move across to d0 takes (0: none)
+    after: float = 0.0  # m the move from d1 to the lane it ends in takes
 
 
 def _start_range(band: Band, radius: float, body: Body) -> tuple[float, float]:
@@ -91,21 +96,95 @@ def _start_range(band: Band, radius: float, body: Body) -> tuple[float, float]:
 
 
 def layout(band: Band, d_from: float, d_to: float, body: Body) -> Layout:
-    """The roundest half circle from lane position `d_from` towards `d_to` that fits the road."""
-    natural = max(abs(d_to - d_from) / 2.0, MIN_RADIUS)
-    low, high = _start_range(band, MIN_RADIUS, body)
-    if low > high:  # too narrow even at the tightest: overhang both edges alike
+    """The half circle from lane position `d_from` that ends at `d_to` if the road lets it
+    (moving over first as far as the rear's swing needs), else the roundest that fits: one
+    no tighter than MIN_RADIUS, and then a move across to `d_to` after it."""
+    widest = _widest(band, body)
+    if widest is None:  # too narrow even at the tightest: overhang both edges alike
+        low, high = _start_range(band, MIN_RADIUS, body)
         d0 = (low + high) / 2.0
         return Layout(MIN_RADIUS, d0, d0 + 2.0 * MIN_RADIUS, False)
-    lo, hi = MIN_RADIUS, natural
-    if _fits(band, hi, body):
+
+    def start(radius: float) -> float:
+        low, high = _start_range(band, radius, body)
+        return min(max(d_from, low), high)
+
+    lo, hi = MIN_RADIUS, widest
+    if start(lo) + 2.0 * lo >= d_to:
+        hi = lo
+    elif start(hi) + 2.0 * hi <= d_to:
         lo = hi
-    for _ in range(30):  # the widest radius up to the natural one whose start range is not empty
+    for _ in range(30):  # where the half circle ends grows with its radius: bisect for d_to
+        mid = (lo + hi) / 2.0
+        lo, hi = (mid, hi) if start(mid) + 2.0 * mid < d_to else (lo, mid)
+    radius = hi
+    d0 = start(radius)
+    d1 = d0 + 2.0 * radius
+    half = body.width / 2.0
+    # a move across swings the rear the other way: towards the right edge before, the left after
+    before = _move_length(d0 - d_from, d_from - half - band.right - MARGIN, body)
+    after = _move_length(d1 - d_to, band.left - MARGIN - half - d1, body)
+    fits = before is not None and after is not None
+    return Layout(radius, d0, d1, fits, before or 0.0, after or 0.0)
+
+
+def _widest(band: Band, body: Body) -> float | None:
+    """The widest radius whose half circle fits the road (None: not even MIN_RADIUS)."""
+    if not _fits(band, MIN_RADIUS, body):
+        return None
+    lo, hi = MIN_RADIUS, max(MIN_RADIUS, band.left - band.right)
+    for _ in range(30):
         mid = (lo + hi) / 2.0
         lo, hi = (mid, hi) if _fits(band, mid, body) else (lo, mid)
-    low, high = _start_range(band, lo, body)
-    d0 = min(max(d_from, low), high)
-    return Layout(lo, d0, d0 + 2.0 * lo, True)
+    return lo
+
+
+def _move_length(gap: float, room: float, body: Body) -> float | None:
+    """The length of road for a move across of `gap` metres (0: none) whose rear swing stays
+    within `room` (None: no move up to MAX_SHIFT long does)."""
+    if abs(gap) < 0.05:
+        return 0.0
+    length = max(MIN_SHIFT, SHIFT * abs(gap))
+    while _swing(gap, length, body) > room + 1e-6:
+        length *= 1.2
+        if length > MAX_SHIFT:
+            return None
+    return length
+
+
+def _swing(gap: float, length: float, body: Body) -> float:
+    """How far the rear of a body trailing a move across (`_move`) reaches back beyond where
+    the move began: it lies on the tangent behind the front bumper."""
+    if gap <= 0.0:
+        return 0.0  # moving towards the edge: the rear swings away from it
+    u = np.linspace(0.0, 1.0, 101)
+    ahead = body.length / length
+    return float(gap * np.max(-3.0 * u**2 + 2.0 * u**3 + 6.0 * ahead * u * (1.0 - u)))
+
+
+def choose(band: Band, start: Point, lanes: Sequence[tuple[int, Polyline]], body: Body) -> tuple[int, float, Layout]:
+    """Of the lanes the turn may end in (number and line running the new way, the preferred
+    first): the first whose half circle ends within NEAR of it, else the one it reaches with the
+    least move across after the half circle. Also that lane's d and the layout."""
+    d_from = band.place(start)[1]
+    options = []
+    for rank, (number, line) in enumerate(lanes):
+        d_to = band.place(line.point(line.project(start)[0]))[1]
+        plan = layout(band, d_from, d_to, body)
+        after = abs(plan.d1 - d_to)
+        options.append(((after > NEAR, after if after > NEAR else 0.0, rank), number, d_to, plan))
+    _, number, d_to, plan = min(options, key=lambda option: option[0])
+    return number, d_to, plan
+
+
+def too_narrow(band: Band, action: str) -> UnsatError:
+    """The site cannot hold the U-turn: unsatisfiable, so that its other rotations are tried."""
+    return UnsatError(
+        Diagnostic(
+            f"{action}: the road is {band.left - band.right:.1f} m wide, too narrow for a U-turn in one sweep "
+            "(it needs a three-point turn, and plans drive forward only)"
+        )
+    )
 
 
 def _fits(band: Band, radius: float, body: Body) -> bool:
@@ -113,39 +192,33 @@ def _fits(band: Band, radius: float, body: Body) -> bool:
     return low <= high
 
 
-def u_turn_line(
-    band: Band, line: Polyline, at: float, target: Polyline, d_to: float, plan: Layout
-) -> tuple[Polyline, float]:
-    """The turn from `line` at arc length `at` onto `target` (a lane running the new way, at
-    `d_to` across the band): the move across, the half circle, the move to the lane. Also the
-    arc length within the turn where the half circle ends."""
-    s_a, d_a = band.place(line.point(at))
-    before = _move(band, s_a, d_a, plan.d0, forward=True)
+def u_turn_line(band: Band, start: Point, target: Polyline, d_to: float, plan: Layout) -> tuple[Polyline, float, float]:
+    """The turn from `start` onto `target` (a lane running the new way, at `d_to` across the
+    band): the move across, the half circle, the move to the lane. Also the arc length within
+    the turn where the half circle ends, and the one on `target` where the turn joins it."""
+    s_a, d_a = band.place(start)
+    before = _move(s_a, d_a, plan.d0, plan.before, forward=True)
     centre, d0 = (before[-1][0], plan.d0) if before else (s_a, d_a)
     theta = np.linspace(0.0, math.pi, 25)
     middle = (centre + plan.radius * np.sin(theta), d0 + plan.radius * (1.0 - np.cos(theta)))
     arc = [band.at(float(s), float(d)) for s, d in zip(*middle, strict=True)]
-    after = _move(band, centre, d0 + 2.0 * plan.radius, d_to, forward=False)
+    after = _move(centre, d0 + 2.0 * plan.radius, d_to, plan.after, forward=False)
     head = [band.at(s, d) for s, d in before[1:-1]]
-    turn = Polyline([line.point(at), *head, *arc[0 if before else 1 :]])
+    turn = Polyline([start, *head, *arc[0 if before else 1 :]])
     arc_end = turn.length
     tail = [band.at(s, d) for s, d in after[1:]]
-    joined = tail[-1] if tail else arc[-1]
-    s_t = target.project(joined)[0]
-    rest = target.sub(s_t, target.length).points if target.length - s_t > 0.5 else target.points[-1:]
-    return Polyline(np.vstack([turn.points, np.asarray(tail).reshape(-1, 2), rest])), arc_end
+    s_t = target.project(tail[-1] if tail else arc[-1])[0]
+    ends = [*tail[:-1], target.point(s_t)] if tail else [target.point(s_t)]
+    return Polyline(np.vstack([turn.points[:-1] if not tail else turn.points, np.asarray(ends)])), arc_end, s_t
 
 
-def _move(band: Band, s: float, d_from: float, d_to: float, *, forward: bool) -> list[tuple[float, float]]:
-    """(s, d) points of a smooth move across from d_from to d_to, going forward or back along
-    the band from s (empty when there is nothing to move)."""
-    gap = abs(d_to - d_from)
-    if gap < 0.05:
+def _move(s: float, d_from: float, d_to: float, length: float, *, forward: bool) -> list[tuple[float, float]]:
+    """(s, d) points of a smooth move across from d_from to d_to over `length` metres of road,
+    going forward or back along the band from s (empty for no move)."""
+    if length == 0.0:
         return []
-    length = max(MIN_SHIFT, SHIFT * gap)
-    count = max(3, math.ceil(length) + 1)
     out = []
-    for w in np.linspace(0.0, 1.0, count):
+    for w in np.linspace(0.0, 1.0, max(3, math.ceil(length) + 1)):
         smooth = w * w * (3.0 - 2.0 * w)
         out.append((s + (length if forward else -length) * w, d_from + (d_to - d_from) * smooth))
     return out
