@@ -8,12 +8,14 @@ A U-turn therefore needs R + w/2 + sqrt((R + w/2)^2 + L^2) of road across (11.6 
 4.6 x 1.8 m car at R = 4 m), and begins far enough from the kerb for the rear to stay on it.
 
 The turn is laid out across the road, in a `Band`: s along the right-most lane of the
-direction the car comes from, d to the left of it. The car moves over from its lane to d0,
-turns on a half circle to d1 = d0 + 2R, facing back, and moves over to the lane it ends
-in. R is the natural radius (half the way from its lane to that lane) unless that is
-tighter than MIN_RADIUS or wider than the road holds. A road narrower than the tightest
-turn needs a three-point turn, which plans do not carry (they drive forward only): the
-layout says it does not fit, and the caller decides.
+direction the car comes from, d to the left of it. The car moves over from its lane to d0
+(as far as the rear's swing needs), turns on a half circle to d1 = d0 + 2R, facing back,
+and ends in its lane: R is chosen so that d1 is that lane when the road lets it, else it is
+MIN_RADIUS or the widest the road holds, and a move across after the half circle reaches
+the lane. A move across swings the trailing rear the other way, so each is long enough to
+keep it on the road. A road narrower than the tightest turn needs a three-point turn,
+which plans do not carry (they drive forward only): the layout says it does not fit, and
+the caller reports the site unsatisfiable (`too_narrow`).
 """
 
 from __future__ import annotations
