@@ -9,12 +9,13 @@ or entering it from a driveway. Each action takes a stretch of the line, recorde
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import change_length
+from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
+from sovarc.compiler.plan import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
@@ -73,6 +74,7 @@ class Drive:
     start_off_road: bool = False
     left_road: bool = False
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
+    site: str = ""  # the site's id, for errors
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -147,18 +149,29 @@ class Drive:
         return end
 
     def u_turn(self, index: int, at: float, to: int | Side | None) -> float:
-        number = to if isinstance(to, int) else len(self.corridor.other if not self.against else self.corridor.own)
-        heading = self.line.heading(at)
+        """Turn back on a half circle that keeps the body on the road (see uturn.py), into lane
+        `to` of the other direction; without one, into the lane the turn reaches most easily
+        (the one by the centre line, unless the road is too narrow to turn into it)."""
+        band = Band.across(self.corridor.own, self.corridor.other)
+        self.lanes.update(lane.id for lane in self.corridor.own + self.corridor.other)  # the whole road
         p0 = self.line.point(at)
         self.corridor = self.corridor.turned()
+        count = len(self.corridor.other if self.against else self.corridor.own)
+        numbers = [_clamp(to, count)] if isinstance(to, int) else [count, *range(1, count)]
+        lines = [self.corridor.other_line(n) if self.against else self.corridor.own_line(n) for n in numbers]
+        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), CAR)
+        if not plan.fits:
+            raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}")
+        if number != numbers[0]:
+            self.notes.append(
+                f"action {index + 1}: the road is too narrow to U-turn into lane {numbers[0]}; turns into lane {number}"
+            )
         target = self._target(number, self.against)
-        s1, _ = target.project(p0)
-        p1 = target.point(s1)
-        arc = bezier(p0, heading, p1, heading + 180.0, samples=24, reach=max(math.dist(p0, p1) * 0.9, 3.0))
+        turn, arc_end, joins = u_turn_line(band, p0, target, d_to, plan)
         head = self.line.sub(0.0, at)
-        tail = target.sub(s1, target.length)
-        self.line = concat([head, arc, tail])
-        end = head.length + arc.length
+        rest = [target.sub(joins, target.length)] if target.length - joins > 0.5 else []
+        self.line = concat([head, turn, *rest])
+        end = head.length + arc_end
         self.stretches[index] = (at, end)
         return end
 

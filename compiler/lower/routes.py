@@ -15,8 +15,9 @@ from typing import Any
 
 import numpy as np
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
-from sovarc.compiler.lower.polyline import Polyline, bezier, concat, unit
+from sovarc.compiler.lower.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
+from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.compiler.plan import CAR
@@ -47,7 +48,9 @@ def vehicle_route(
     arm = next(a for a in match.site.arms if a.id == placement.arm)
     lane = placement.lane or 1
     corridor = Corridor.entering(arm)
-    drive = Drive(corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane)
+    drive = Drive(
+        corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane, site=match.site.id
+    )
     actions = p.known_actions
     if match.site.kind is RoadKind.STRAIGHT:
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
@@ -134,6 +137,9 @@ def _through_junction(
     turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map)
     entry = drive.line.length
     exit_line = exit_corridor.own_line(exit_number)
+    joins = exit_line.project(turn.point(turn.length))[0]  # a U-turn may join its lane past the start
+    if joins > 0.5:
+        exit_line = exit_line.sub(joins, exit_line.length)
     drive.line = concat([drive.line, turn, exit_line])
     drive.corridor, drive.lane, drive.against = exit_corridor, exit_number, False
     drive._use(exit_corridor.own[exit_number - 1])
@@ -176,18 +182,15 @@ def _junction_line(
                 drive.start_in(number)
                 why = "the arm is too short to change lanes"
                 drive.notes.append(f"starts in lane {number}, the lane its {move.value} leaves from: {why}")
+    if move is ActionKind.U_TURN:
+        return _u_turn(drive, arm, to, match.site.id)
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
-    if drive.against or move is ActionKind.U_TURN:
-        exit_arm = arm if move is ActionKind.U_TURN else _arm_for_move(match, arm, move)
-        corridor = Corridor.leaving(exit_arm)
+    if drive.against:
+        corridor = Corridor.leaving(_arm_for_move(match, arm, move))
         number = min(to if isinstance(to, int) else len(corridor.own), len(corridor.own))
         start = corridor.own_line(number)
-        if move is ActionKind.U_TURN:
-            turn = Polyline([end, *_u_bend(end, heading, start.point(0.0)), start.point(0.0)])
-        else:
-            turn = bezier(end, heading, start.point(0.0), start.heading(0.0))
-        return turn, corridor, number
+        return bezier(end, heading, start.point(0.0), start.heading(0.0)), corridor, number
     target = _lane(match, connection.to_lane)
     exit_arm = match.site.arm_of_lane(connection.to_lane)
     assert exit_arm is not None
@@ -201,11 +204,24 @@ def _junction_line(
     return turn, corridor, target.number
 
 
-def _u_bend(p0: tuple[float, float], heading: float, p1: tuple[float, float]) -> list[tuple[float, float]]:
-    width = max(((p0[0] - p1[0]) ** 2 + (p0[1] - p1[1]) ** 2) ** 0.5, 3.0)
-    d = unit(heading)
-    reach = width * 0.9
-    return [(p0[0] + reach * d[0], p0[1] + reach * d[1]), (p1[0] + reach * d[0], p1[1] + reach * d[1])]
+def _u_turn(drive: Drive, arm: Arm, to: Any, site: str) -> tuple[Polyline, Corridor, int]:
+    """A U-turn at the junction back onto the arm's outgoing lanes (see uturn.py): its half circle
+    begins at the stop line, and any move across before it ends there (the line is cut back to
+    where it begins). Every lane of the arm's road is the U-turn's to use."""
+    band = Band.across(arm.incoming, arm.outgoing)
+    corridor = Corridor.leaving(arm)
+    count = len(corridor.own)
+    numbers = [min(max(to, 1), count)] if isinstance(to, int) else [count, *range(1, count)]
+    end = drive.line.point(drive.line.length)
+    number, d_to, plan = choose(band, end, [(n, corridor.own_line(n)) for n in numbers], CAR)
+    if not plan.fits:
+        raise too_narrow(band, f"on {site}, the U-turn from {arm.id}")
+    at = drive.line.length - plan.before
+    if at > 1.0:
+        drive.line = drive.line.sub(0.0, at)
+    turn, _, _ = u_turn_line(band, drive.line.point(drive.line.length), corridor.own_line(number), d_to, plan)
+    drive.lanes.update(lane.id for lane in arm.incoming + arm.outgoing)
+    return turn, corridor, number
 
 
 def _arm_for_move(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm:
