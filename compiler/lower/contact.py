@@ -32,7 +32,8 @@ TOUCH = 0.45  # m: lines closer than this meet
 MERGE_BACK = 4.0  # m before a merge (after a diverge) from where the lines' angle is measured
 APART = 1.0  # m: ... at the first point where they are this far apart
 SHALLOW = 30.0  # degrees: lines crossing at less than this meet side to front before they cross
-SIDE_OVERLAP = 0.3  # m a striker's front corner reaches into the victim's side at a shallow contact
+SIDE_OVERLAP = 0.1  # m a striker's front corner reaches into the victim's side at a shallow contact:
+# small, since at 6 degrees each 0.1 m of it puts the first touch about 1 m before C_A
 APART_WITHIN = 30.0  # m: lines that stay closer over this far do not merge, they run together
 FRONT_OFFSET = 0.9  # m: fronts this far apart sideways still meet (about half a car's width)
 HEAD_ON = 135.0  # degrees between headings for an offset frontal contact

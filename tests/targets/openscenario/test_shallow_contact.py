@@ -1,0 +1,38 @@
+"""A shallow side hit, planned and synthesized for real, first touches inside C_A: the striker's
+front corner reaches only SIDE_OVERLAP into the victim's side at the planned impact, so at a few
+degrees the bodies do not meet metres before it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from sovarc.compiler.lower import lower_on, sites_for
+from sovarc.compiler.maps import load_map
+from sovarc.compiler.synth import synthesize
+from sovarc.dsl import parse
+from sovarc.targets.openscenario import check, emit_files
+
+from tests.targets.openscenario.plans import TOWN
+
+pytestmark = pytest.mark.slow  # netconvert writes the .xodr
+
+# V1 stops at a T's stem, then turns left into lane 2; V2, in lane 1 of the road it turns onto,
+# strikes it as it drifts over at about 6 degrees (NMVCCS t_0, rewritten)
+DRIFT = """scenario drift_into_lane_2 {
+  road { kind t_junction lanes 6 speed_limit 72 km/h }
+  vehicle V1 { heading south lane unknown actions { follow_lane stop turn_left(to: 2) } }
+  vehicle V2 { heading east lane 1 actions unknown }
+  crash { type side striker V2 victim V1 }
+}
+"""
+
+
+def test_a_turn_into_the_partners_lane_first_touches_in_the_collision_area(tmp_path: Path) -> None:
+    town = load_map(TOWN)
+    staged, notes, matches = sites_for(parse(DRIFT, "drift.sov"), town, roads=3)
+    for match in matches:
+        plan = synthesize(lower_on(staged, match, town, notes))
+        verdict = check(emit_files(plan, tmp_path / match.site.id.replace(":", "_")).xosc, plan)
+        assert verdict.passed, (match.site.id, verdict.dumps())
+        assert verdict.facts["relative_heading"] < 15.0  # a drift into the lane, not a crossing
