@@ -56,15 +56,11 @@ class Polyline:
         at = np.linspace(0.0, self.length, count)
         return np.column_stack((np.interp(at, self.s, self.points[:, 0]), np.interp(at, self.s, self.points[:, 1])))
 
-    def smoothing(self, window: float = 6.0, pins: Sequence[float] = ()) -> tuple[Polyline, np.ndarray]:
+    def smoothing(self, window: float = 6.0) -> tuple[Polyline, np.ndarray]:
         """The line resampled every metre and averaged over `window` metres (kinks where two lane
         shapes meet are rounded off, curves wider than the window keep their shape, ends stay
         put), and for each of its points the arc length on this line it comes from:
-        np.interp(s, from_s, smooth.s) carries an arc length over (curves get shorter).
-
-        At each of `pins` (arc lengths) the line stays where it is: the window shrinks to the
-        distance from the pin, so no averaging reaches across it (a turn's bend is rounded
-        after a stop line, never before it, where the approach lane's lines still hold)."""
+        np.interp(s, from_s, smooth.s) carries an arc length over (curves get shorter)."""
         points = self.resample(1.0)
         half = int(window // 2)
         if len(points) <= 2 * half + 1:
@@ -73,13 +69,6 @@ class Polyline:
         kernel = np.ones(2 * half + 1) / (2 * half + 1)
         padded = np.vstack([np.repeat(points[:1], half, axis=0), points, np.repeat(points[-1:], half, axis=0)])
         smooth = np.column_stack([np.convolve(padded[:, i], kernel, mode="valid") for i in (0, 1)])
-        index = np.arange(len(points))
-        reach = np.full(len(points), half)
-        for pin in pins:
-            reach = np.minimum(reach, np.abs(index - round(float(np.interp(pin, from_s, index)))))
-        for i in np.flatnonzero(reach < half):
-            r = min(int(reach[i]), i, len(points) - 1 - i)  # a symmetric window that stops at the pin
-            smooth[i] = points[i - r : i + r + 1].mean(axis=0)
         smooth[0], smooth[-1] = points[0], points[-1]
         line = Polyline(smooth)
         if len(line.s) != len(from_s):  # a repeated point was dropped: carry over by proportion

@@ -47,7 +47,6 @@ class Route:
     starts_at_rest: bool = False  # its first action is a stop (or it waits in a driveway)
     notes: list[str] = field(default_factory=list)
     caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line
-    stop_line: float | None = None  # where a junction move begins: the line bends only after it
 
     def cap_between(self, a: float, b: float) -> float:
         """The lowest curvature speed cap over [a, b]."""

@@ -61,7 +61,7 @@ def vehicle_route(
     starts_at_rest = bool(actions) and actions[0].kind is ActionKind.STOP
     # Smoothed once, here: the contact, the curve caps and the synthesized path all measure
     # arc length on the line the car really drives, so the crash lands where it was solved.
-    line, from_s = drive.line.smoothing(pins=() if entry is None else (entry,))
+    line, from_s = drive.line.smoothing()
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
@@ -78,7 +78,6 @@ def vehicle_route(
         start_hi=carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0,
         starts_at_rest=starts_at_rest or drive.start_off_road,
         notes=[f"{p.id} {n}" for n in drive.notes],
-        stop_line=None if entry is None else carry(entry),
     )
 
 

@@ -63,8 +63,7 @@ def _trajectory(
     solution = lowered.solution
     notes = []
     vehicle = route.participant.role is Role.VEHICLE
-    pins = () if route.stop_line is None else (route.stop_line,)  # a junction move bends only after it
-    path, chords = plan_path(route.line, vehicle=vehicle, pins=pins)
+    path, chords = plan_path(route.line, vehicle=vehicle)
     if chords > 2:
         notes.append(f"{pid}: {chords} pieces of path tighter than a car turns; planned along the lane line")
     legs = solution.legs.get(pid, ())

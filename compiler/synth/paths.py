@@ -60,23 +60,16 @@ class Path:
         return x, y, _compass(yaw), scale
 
 
-def plan_path(line: Polyline, *, vehicle: bool, pins: tuple[float, ...] = ()) -> tuple[Path, int]:
-    """The path along `line` (extended straight past its end); also the number of chords used.
-    At each of `pins` (a stop line) there is a waypoint, and none in the metres before it: a
-    curve from one there to one past it would bend ahead of the pin, where the line does not."""
+def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
+    """The path along `line` (extended straight past its end); also the number of chords used."""
     end = line.point(line.length)
     heading = line.heading(line.length)
     rad = math.radians(heading)
     extended = Polyline(
         np.vstack([line.points, [end[0] + EXTENSION * math.sin(rad), end[1] + EXTENSION * math.cos(rad)]])
     )
-    at = np.linspace(0.0, extended.length, max(2, math.ceil(extended.length / WAYPOINT_STEP) + 1))
-    inner = [p for p in pins if WAYPOINT_STEP < p < line.length - WAYPOINT_STEP]
-    if inner:  # none just before a pin, whose curve would bend ahead of it
-        ahead = at[:, None] - np.array(inner)[None, :]
-        near = ((ahead > -WAYPOINT_STEP / 2.0) & (ahead < 1.0)).any(axis=1)
-        at = np.sort(np.concatenate([at[~near], inner]))
-    count = len(at)
+    count = max(2, math.ceil(extended.length / WAYPOINT_STEP) + 1)
+    at = np.linspace(0.0, extended.length, count)
     states = [(*extended.point(s), _yaw(_tangent(extended, s))) for s in at]
     if not vehicle:
         return Path(at, states, np.diff(at), [None] * (count - 1)), 0
