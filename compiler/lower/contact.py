@@ -40,6 +40,9 @@ HEAD_ON = 135.0  # degrees between headings for an offset frontal contact
 # Lines that cross for a frontal crash meet at least as far apart as every oracle's frontal angle:
 # a crossing under it is no frontal crash (it used to be planned and then failed the replay).
 FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
+# A victim whose front has turned further than this from the striker's heading has left the lane
+# they shared: 15 degrees inside every oracle's bound for a rear-end.
+ALONG = CRASH_ANGLES["rear_end"][1] - 15.0
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 
 
@@ -100,7 +103,11 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         sign = 1 if same else -1
         offsets = sb[nearest[lo : hi + 1]] - sign * sa[lo : hi + 1]
         offset = float(np.median(offsets)) + k
-        found.append(Contact(float(sa[lo]), float(sa[hi]), sign, offset, 0.0 if same else 180.0, "shared"))
+        face_lo, face_hi = _along_face(ha, hb, sa, offset, sign, lo, hi)
+        if sa[face_hi] - sa[face_lo] >= STEP:
+            found.append(
+                Contact(float(sa[face_lo]), float(sa[face_hi]), sign, offset, 0.0 if same else 180.0, "shared")
+            )
         close[lo : hi + 1] = False
         if same:
             rear = victim.body.length / 2.0  # from the middle of the victim's side to its rear
@@ -133,6 +140,18 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "offset"))
     return found
+
+
+def _along_face(
+    ha: np.ndarray, hb: np.ndarray, sa: np.ndarray, offset: float, sign: int, lo: int, hi: int
+) -> tuple[int, int]:
+    """A shared stretch [lo, hi] cut back to where the victim's front (at offset + sign * s, a body
+    ahead of a rear-end's striker) last runs with the striker: past that the victim has turned
+    out of the lane they share, and a striker there meets it angled away, in no rear-end."""
+    j = np.clip(np.rint((offset + sign * sa[lo : hi + 1]) / STEP).astype(int), 0, len(hb) - 1)
+    angle = np.abs((ha[lo : hi + 1] - hb[j] + 180.0) % 360.0 - 180.0)
+    along = np.flatnonzero((angle < ALONG) if sign == 1 else (angle > 180.0 - ALONG))
+    return (lo, lo + int(along[-1])) if len(along) else (lo, lo)
 
 
 def _apart_before(d: np.ndarray, i: int, gap: float) -> int | None:

@@ -25,6 +25,7 @@ those fail, with only the hard facts. Only the last pass's failure is an error.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -46,6 +47,8 @@ NICE_T_MAX = (12.0, 25.0)  # s: a short approach first (Z3 takes any model, ofte
 REAR_END_GAIN = 1.5  # m/s a rear-end striker is faster than its moving victim
 MIN_LEAD = 6.0  # m a vehicle drives before the crash at the least (LEAD is the natural length)
 AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach speed
+START_TOUCH = 0.5  # m: lines that begin this close begin in one lane
+START_GAP = 1.0  # m between two vehicles that start one behind the other in one lane
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
 
@@ -163,6 +166,7 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
     t_hit = z.real("t_hit")
     need("impact", z3.And(t_hit >= 2.0, t_max >= t_hit))
     motions = {pid: _motion(pid, r, problem, need, nice, z) for pid, r in problem.routes.items()}
+    _apart_at_start(problem, motions, need)
     _contact(problem, motions, t_hit, need, nice, z)
     result = solver.check()
     if result == z3.unknown:
@@ -270,6 +274,40 @@ def _reach(problem: Problem, pid: str) -> float | None:
     if pid == problem.victim:
         return max(c.victim_s(c.lo), c.victim_s(c.hi)) + AFTER_CRASH
     return None
+
+
+def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> None:
+    """Vehicles whose lines begin together (one lane, one way) start a body length and START_GAP
+    apart, the victim ahead of its striker: bodies that overlap at the start are a crash before
+    the crash (or a striker that begins already past the victim's rear)."""
+    vehicles = [pid for pid, r in problem.routes.items() if r.participant.role is Role.VEHICLE]
+    for a, b in itertools.combinations(vehicles, 2):
+        ra, rb = problem.routes[a], problem.routes[b]
+        if not _start_together(ra, rb):
+            continue
+        if {a, b} == {problem.striker, problem.victim}:
+            ahead, behind = problem.victim, problem.striker
+            need(f"{ahead}.route", motions[ahead].start - motions[behind].start >= _spacing(problem, ahead))
+        else:
+            need(
+                f"{b}.route",
+                z3.Or(
+                    motions[b].start - motions[a].start >= _spacing(problem, b),
+                    motions[a].start - motions[b].start >= _spacing(problem, a),
+                ),
+            )
+
+
+def _start_together(a: Route, b: Route) -> bool:
+    """The two lines begin at one place, going one way."""
+    gap = math.dist(a.line.point(0.0), b.line.point(0.0))
+    turn = abs((a.line.heading(0.0) - b.line.heading(0.0) + 180.0) % 360.0 - 180.0)
+    return gap < START_TOUCH and turn < 20.0
+
+
+def _spacing(problem: Problem, ahead: str) -> float:
+    """How far the front of the vehicle ahead is at the least from the front of the one behind."""
+    return problem.routes[ahead].body.length + START_GAP
 
 
 def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any, nice: bool, z: _Terms) -> None:

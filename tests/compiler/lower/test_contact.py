@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from sovarc.compiler.lower.contact import FACE, SIDE_OVERLAP, contacts, describe
+from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, contacts, describe
 from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.plan import CAR
@@ -117,3 +117,15 @@ def test_a_wrong_way_swerve_meets_the_oncoming_side_before_the_lines_join() -> N
     assert swerve
     front = striker.line.point(swerve[0].lo)
     assert front[1] < 40.0 and abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
+
+
+def test_a_rear_end_in_a_shared_lane_ends_while_the_victim_still_runs_along_it() -> None:
+    striker = route("A", (0.0, 0.0), (0.0, 100.0))
+    victim = route("B", (0.0, 20.0), (0.0, 60.0), (30.0, 60.0))  # turns off right at y = 60
+    shared = [c for c in contacts(striker, victim, CrashType.REAR_END) if c.kind == "shared"]
+    assert shared
+    for rear in shared:
+        # at the end of the range the victim's front, a body ahead, has not yet turned away
+        turned = victim.line.heading(rear.victim_s(rear.hi)) - striker.line.heading(rear.hi)
+        assert abs(turned) < ALONG
+        assert rear.victim_s(rear.hi) <= 40.0 + 0.5  # its front is at most at the corner
