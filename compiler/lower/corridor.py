@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import change_length
 from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
+from sovarc.compiler.maps.sites import MEDIAN_MAX
 from sovarc.compiler.plan import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
@@ -130,14 +132,52 @@ class Drive:
         self.line = self._target(number, False)
 
     def retrograde(self, index: int, at: float) -> float:
-        """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line."""
-        lanes = self.corridor.own if self.against else self.corridor.other
-        number = self.wrong_way_lane or len(lanes)
-        return self._blend(index, at, self._target(min(number, len(lanes)), not self.against))
+        """Cross into the other direction's lane: `wrong_way_lane` if set, else the one by the centre line.
 
-    def _blend(self, index: int, at: float, target: Polyline) -> float:
+        The swerve runs beside that lane: an arm's oncoming edge may begin further on than its own
+        lane (a node splits it), and before it the car would cross lanes its route does not hold.
+        It crosses a lane line, never a median (see `over_median`).
+        """
+        lanes = self.corridor.own if self.against else self.corridor.other
+        number = min(self.wrong_way_lane or len(lanes), len(lanes))
+        target = self.corridor.own_line(number) if self.against else self.corridor.other_line(number)
+        here = min(at, self.line.length - 1.0)
+        ahead = self.line.sub(here, self.line.length)  # not the road behind a U-turn
+        begins, ends = (here + ahead.project(target.point(s))[0] for s in (0.0, target.length))
+        if begins > at + 0.5:
+            self.notes.append(
+                f"action {index + 1}: swerves {begins - at:.0f} m later, where lane {lanes[number - 1].id} begins"
+            )
+            at = begins
+        self.over_median(index, at, min(at + change_length(self.speed), ends))
+        return self._blend(index, at, self._target(number, not self.against), until=ends)
+
+    def over_median(self, index: int, lo: float, hi: float) -> None:
+        """Refuse a crossing between the directions, from arc length `lo` to `hi`, where their inner
+        lanes lie further apart than MEDIAN_MAX: a median (a kerb, grass, rails) is no lane line,
+        just as a divided road's halves make no two-way straight site (maps/sites.py)."""
+        inner = Polyline(self.corridor.own[-1].shape)
+        facing = Polyline(self.corridor.other[-1].shape)
+        widths = (self.corridor.own[-1].width + self.corridor.other[-1].width) / 2.0
+        gaps = [0.0]
+        for s in np.linspace(lo, max(lo, min(hi, self.line.length)), 9):
+            beside = inner.point(inner.project(self.line.point(float(s)))[0])
+            t, distance = facing.project(beside)
+            if 0.5 < t < facing.length - 0.5:  # the other direction runs beside here
+                gaps.append(distance - widths)
+        if max(gaps) > MEDIAN_MAX:
+            raise LoweringError(
+                Diagnostic(
+                    f"action {index + 1}: on {self.site}, a median {max(gaps):.1f} m wide divides the road "
+                    f"({self.corridor.own[-1].edge} from {self.corridor.other[-1].edge}): "
+                    "no lane line to cross into the oncoming lanes"
+                )
+            )
+
+    def _blend(self, index: int, at: float, target: Polyline, until: float | None = None) -> float:
+        """Move across to `target` from arc length `at`, ending by `until` if given."""
         end = at + change_length(self.speed)
-        end = min(end, self.line.length - 5.0)
+        end = min(end, self.line.length - 5.0, self.line.length if until is None else until)
         if end - at < 2.0:
             raise LoweringError(
                 Diagnostic(f"action {index + 1}: {self.line.length:.0f} m of road leave no room to move across")
