@@ -14,7 +14,8 @@ Lines meet in two ways:
 
 A crash type accepts only some: a rear-end needs a shared stretch in the same direction
 (or a shallow merge), a head-on a stretch in opposite directions (or a crossing met front
-to front), a side impact a crossing.
+to front), a side impact a crossing, met where the striker's front face first reaches the
+victim's side, before the lines cross (`_face_reaches`).
 """
 
 from __future__ import annotations
@@ -64,7 +65,7 @@ class Contact:
 def contacts(striker: Route, victim: Route, crash: CrashType) -> list[Contact]:
     """Every contact the crash type accepts, best first."""
     k = FACE[crash] * victim.body.length
-    found = [c for c in _meetings(striker, victim, k) if _accepts(crash, c)]
+    found = [c for c in _meetings(striker, victim, k, crash is CrashType.SIDE) if _accepts(crash, c)]
     preference = {
         CrashType.REAR_END: lambda c: (c.kind != "shared", c.angle, -c.hi),
         CrashType.FRONTAL: lambda c: (c.kind != "shared", -c.angle, c.lo),
@@ -85,7 +86,7 @@ def _accepts(crash: CrashType, c: Contact) -> bool:
     return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)
 
 
-def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
+def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> list[Contact]:
     a, sa = _samples(striker.line.points, striker.line.s)
     b, sb = _samples(victim.line.points, victim.line.s)
     ha, hb = _headings(a), _headings(b)
@@ -123,6 +124,14 @@ def _meetings(striker: Route, victim: Route, k: float) -> list[Contact]:
                 found.append(Contact(s_striker, s_striker, 0, u + k, turn, "crossing"))
     for lo, hi in _runs(close):
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
+        if side:
+            # a front meets a side before the lines cross, where its leading corner reaches it
+            met = _face_reaches(d, angle, nearest, i, striker.body.width / 2.0, victim.body.width / 2.0)
+            if met is None and angle[i] < SHALLOW:
+                continue  # never that far apart just before: the end of a shared stretch
+            s_striker, u = met if met is not None else (float(sa[i]), float(sb[nearest[i]]))
+            found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
+            continue
         if angle[i] < SHALLOW:
             # bodies touch well before shallow lines cross: meet where they are `gap` apart; lines
             # never that far apart just before are the end of a shared stretch (a diverge, above)
@@ -152,6 +161,27 @@ def _along_face(
     angle = np.abs((ha[lo : hi + 1] - hb[j] + 180.0) % 360.0 - 180.0)
     along = np.flatnonzero((angle < ALONG) if sign == 1 else (angle > 180.0 - ALONG))
     return (lo, lo + int(along[-1])) if len(along) else (lo, lo)
+
+
+def _face_reaches(
+    d: np.ndarray, angle: np.ndarray, nearest: np.ndarray, i: int, half_striker: float, half_victim: float
+) -> tuple[float, float] | None:
+    """Where, at or before striker point `i` (within APART_WITHIN), its front's leading corner,
+    (half_striker) cos(angle) nearer the victim's line than its middle, is SIDE_OVERLAP into the
+    victim's side, and a quarter of its width more when head-on to it, as (s, u) interpolated
+    between points. A front meeting a side touches first there, not where the lines cross: a
+    slow U-turn across a car beside it touched 3-5 m before a contact placed at the crossing."""
+    rad = np.radians(angle)
+    # deeper the steeper: a steep front closes fast, and a deeper touch is not lost if they part
+    reach = half_victim + half_striker * np.abs(np.cos(rad)) - SIDE_OVERLAP - half_victim * np.sin(rad) / 2.0
+    gap = d.min(axis=1) - reach
+    b = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if gap[b] >= 0.0), None)
+    if b is None:
+        return None
+    if b == i:
+        return b * STEP, float(nearest[b]) * STEP
+    t = float(gap[b] / (gap[b] - gap[b + 1]))  # gap[b + 1] < 0 <= gap[b]
+    return (b + t) * STEP, float(nearest[b] + t * (nearest[b + 1] - nearest[b])) * STEP
 
 
 def _apart_before(d: np.ndarray, i: int, gap: float) -> int | None:

@@ -24,7 +24,9 @@ ONCOMING_ACROSS = route("C", (-43.301, 25.0), (43.301, -25.0))  # heading 120: a
 def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None:
     (side,) = contacts(NORTH, EAST, CrashType.SIDE)
     assert (side.kind, side.sign, side.angle) == ("crossing", 0, pytest.approx(90.0))
-    assert side.lo == side.hi == pytest.approx(50.0)  # the striker's front is at the crossing point
+    # the striker's front face is into the victim's side by SIDE_OVERLAP and, head-on to it, a
+    # quarter of the victim's width: short of the crossing point by the rest of its half width
+    assert side.lo == side.hi == pytest.approx(50.0 - (CAR.width / 4 - SIDE_OVERLAP), abs=0.05)
     # the victim's front is half a body past the crossing, so that its side's middle is there
     assert side.victim_s(side.lo) == pytest.approx(50.0 + FACE[CrashType.SIDE] * CAR.length)
     assert contacts(NORTH, EAST, CrashType.REAR_END) == []
@@ -94,7 +96,8 @@ def test_lines_crossing_shallowly_meet_side_on_before_they_cross() -> None:
     assert front[1] < 45.0  # before the crossing at y = 50
     assert abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
     (steep,) = contacts(NORTH, EAST, CrashType.SIDE)
-    assert steep.lo == pytest.approx(50.0)  # at right angles the front meets the side where the lines cross
+    # at right angles the front face is into the side before the lines cross (see above)
+    assert steep.lo == pytest.approx(50.0 - (CAR.width / 4 - SIDE_OVERLAP), abs=0.05)
 
 
 def test_a_victim_angling_out_of_the_lane_is_met_at_its_rear_once_half_out() -> None:

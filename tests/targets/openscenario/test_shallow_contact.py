@@ -1,6 +1,6 @@
-"""A shallow side hit, planned and synthesized for real, first touches inside C_A: the striker's
-front corner reaches only SIDE_OVERLAP into the victim's side at the planned impact, so at a few
-degrees the bodies do not meet metres before it."""
+"""Side hits, planned and synthesized for real, first touch inside C_A: at the planned impact the
+striker's leading front corner is only a little into the victim's side (SIDE_OVERLAP, more the
+steeper the angle), so a shallow or slow approach does not touch metres before it."""
 
 from __future__ import annotations
 
@@ -36,3 +36,23 @@ def test_a_turn_into_the_partners_lane_first_touches_in_the_collision_area(tmp_p
         verdict = check(emit_files(plan, tmp_path / match.site.id.replace(":", "_")).xosc, plan)
         assert verdict.passed, (match.site.id, verdict.dumps())
         assert verdict.facts["relative_heading"] < 15.0  # a drift into the lane, not a crossing
+
+
+# V1 U-turns from lane 1 across V2, which drives on beside it in lane 2 at the same pace: V1's
+# front corner reaches V2's side well before its bumper's middle crosses V2's line (NMVCCS straight_22)
+U_TURN_ACROSS = """scenario u_turn_across {
+  road { kind straight lanes 4 speed_limit 48 km/h }
+  vehicle V1 { heading east lane unknown actions { follow_lane u_turn(to: 2) } }
+  vehicle V2 { heading east lane 2 actions { follow_lane } }
+  crash { type side striker V1 victim V2 }
+}
+"""
+
+
+def test_a_slow_u_turn_across_the_car_beside_first_touches_in_the_collision_area(tmp_path: Path) -> None:
+    town = load_map(TOWN)
+    staged, notes, matches = sites_for(parse(U_TURN_ACROSS, "u_turn.sov"), town, roads=3)
+    for match in matches:
+        plan = synthesize(lower_on(staged, match, town, notes))
+        verdict = check(emit_files(plan, tmp_path / match.site.id.replace(":", "_").replace("|", "_")).xosc, plan)
+        assert verdict.passed, (match.site.id, verdict.dumps())
