@@ -19,10 +19,9 @@ import time
 from functools import partial
 from pathlib import Path
 
-from sovarc.compiler.backend import SiteResult, default_spare, fill_slots
-from sovarc.compiler.lower import lower_on, sites_for
+from sovarc.compiler.backend import SiteResult, default_spare, fill_slots, plan_site
+from sovarc.compiler.lower import sites_for
 from sovarc.compiler.maps import RoadMap, SiteMatch, load_map
-from sovarc.compiler.synth import synthesize
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import Scenario
@@ -77,11 +76,8 @@ def _timed_plan(
     staged: Scenario, notes: list[str], road_map: RoadMap, spent: dict[str, float], match: SiteMatch
 ) -> SiteResult:
     """Lower and synthesize on one site, noting the seconds it took in `spent`."""
-    result, start = SiteResult(match.site.id), time.perf_counter()
-    try:
-        result.plan = synthesize(lower_on(staged, match, road_map, notes))
-    except SovarcError as error:
-        result.error = error
+    start = time.perf_counter()
+    result = plan_site(staged, notes, road_map, match)
     spent[match.site.id] = time.perf_counter() - start
     return result
 

@@ -29,11 +29,9 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from sovarc.compiler.backend import SiteResult, default_spare, fill_slots
-from sovarc.compiler.lower import lower_on
+from sovarc.compiler.backend import SiteResult, default_spare, fill_slots, plan_site
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.maps import RoadMap, find_sites, load_map, match_sites
-from sovarc.compiler.synth import synthesize
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import RoadKind, Scenario
@@ -106,15 +104,12 @@ def _stage(
     crashes: dict[str, str] = {}
 
     def attempt(match: Any) -> SiteResult:
-        result = SiteResult(match.site.id)
         start = time.perf_counter()
         try:
-            result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
-        except SovarcError as error:
-            result.error = error
+            result = plan_site(staged, notes, road_map, match, seed)
         except Exception as error:  # a crash is a bug: counted and named
             crashes[match.site.id] = f"CRASH {type(error).__name__}: {error}"
-            result.error = SovarcError(crashes[match.site.id])
+            result = SiteResult(match.site.id, error=SovarcError(crashes[match.site.id]))
         seconds[match.site.id] = time.perf_counter() - start
         return result
 

@@ -57,21 +57,24 @@ def plans_for(
 ) -> list[SiteResult]:
     """Lower and synthesize on up to `roads` sites, trying up to `spare` more (default:
     `default_spare`) in place of sites that fail; a slot no site could fill keeps its first failure."""
-    from sovarc.compiler.lower import lower_on, sites_for
-    from sovarc.compiler.synth import synthesize
+    from sovarc.compiler.lower import sites_for
 
     spare = default_spare(roads) if spare is None else spare
     staged, notes, matches = sites_for(scenario, road_map, roads=roads + spare, seed=seed)
+    return fill_slots(matches, roads, lambda match: plan_site(staged, notes, road_map, match, seed))
 
-    def attempt(match: SiteMatch) -> SiteResult:
-        result = SiteResult(match.site.id)
-        try:
-            result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
-        except SovarcError as exc:
-            result.error = exc
-        return result
 
-    return fill_slots(matches, roads, attempt)
+def plan_site(staged: Scenario, notes: list[str], road_map: RoadMap, match: SiteMatch, seed: int = 0) -> SiteResult:
+    """Lower and synthesize the staged scenario on one site; a failure is kept as the result's error."""
+    from sovarc.compiler.lower import lower_on
+    from sovarc.compiler.synth import synthesize
+
+    result = SiteResult(match.site.id)
+    try:
+        result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
+    except SovarcError as exc:
+        result.error = exc
+    return result
 
 
 def fill_slots(

@@ -67,9 +67,7 @@ def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:
         ego=args.ego,
         osc_version=args.osc_version,
     )
-    table = summary(results, args.target)
-    write_atomic(out / "summary.txt", table)  # the sites given up, and why, are in no site's folder
-    print(table, end="")
+    _print_summary(summary(results, args.target), out)
     print(f"written to {out}/", file=sys.stderr)
     # A failed ego test (fmu) is a finding about the driving system, not a failure of the run.
     ok = all(r.plan is not None and all(passed(v) for t, v in r.verdicts.items() if t != "fmu") for r in results)
@@ -141,10 +139,14 @@ def cmd_lower(args: argparse.Namespace) -> int:
     for r in results:
         if r.error is not None:
             print(r.error.render(), file=sys.stderr)
-    table = summary(results, ())
-    write_atomic(Path(args.output) / "summary.txt", table)
-    print(table, end="")
+    _print_summary(summary(results, ()), Path(args.output))
     return EXIT_OK if all(r.plan for r in results) else EXIT_INPUT
+
+
+def _print_summary(table: str, out: Path) -> None:
+    """Print the table and keep it as out/summary.txt: the sites given up, and why, are in no site's folder."""
+    write_atomic(out / "summary.txt", table)
+    print(table, end="")
 
 
 def classify(verdict: object) -> str | None:

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from sovarc.compiler.backend import default_map, folder_name, plans_for
+from sovarc.compiler.backend import default_map, first_message, folder_name, plans_for
 from sovarc.compiler.cli_backend import add_spare_option
 from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.compiler.progress import progress
@@ -113,11 +113,11 @@ def tests_table(
             results = plans_for(scenario, road_map, roads, seed, spare)
         except SovarcError as exc:  # no site of its kind could be chosen
             for _ in range(roads):
-                table.add_unplanned(scenario.name, kind, "-", "no fitting site", _first(exc))
+                table.add_unplanned(scenario.name, kind, "-", "no fitting site", first_message(exc))
             continue
         for r in results:
             if r.plan is None:
-                table.add_unplanned(scenario.name, kind, r.site, _why(r.error), _first(r.error))
+                table.add_unplanned(scenario.name, kind, r.site, _why(r.error), first_message(r.error))
             else:
                 table.add_plan(r.plan, ego, seed, baseline=baseline, out_dir=out_dir)
         for _ in range(roads - len(results)):
@@ -145,10 +145,6 @@ def _why(error: SovarcError | None) -> str:
     if isinstance(error, SynthesisError):
         return "synthesis"
     return "lowering" if error is not None and error.stage == "lower" else "other"
-
-
-def _first(error: SovarcError | None) -> str:
-    return error.diagnostics[0].message if error is not None and error.diagnostics else str(error or "")
 
 
 def _positive(value: str) -> int:

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from sovarc.compiler.lower.route import Route
-from sovarc.compiler.maps.geometry import angle_diff
+from sovarc.compiler.maps.geometry import angle_diff, angle_diffs
 from sovarc.dsl.ir import CrashType
 from sovarc.targets.verdict import CRASH_ANGLES  # what every oracle calls frontal
 
@@ -92,8 +92,9 @@ def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> li
     ha, hb = _headings(a), _headings(b)
     d = np.hypot(a[:, None, 0] - b[None, :, 0], a[:, None, 1] - b[None, :, 1])
     nearest = d.argmin(axis=1)
-    close = d[np.arange(len(a)), nearest] < TOUCH
-    angle = np.abs((ha - hb[nearest] + 180.0) % 360.0 - 180.0)
+    apart = d[np.arange(len(a)), nearest]  # each striker point's distance from the victim's line
+    close = apart < TOUCH
+    angle = np.abs(angle_diffs(ha, hb[nearest]))
     parallel = close & ((angle < 20.0) | (angle > 160.0))
     found: list[Contact] = []
     gap = (striker.body.width + victim.body.width) / 2.0 - SIDE_OVERLAP
@@ -113,11 +114,11 @@ def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> li
         if same:
             rear = victim.body.length / 2.0  # from the middle of the victim's side to its rear
             meets = (
-                _merge(ha, hb, d, nearest, lo, gap),
+                _merge(ha, hb, d, apart, nearest, lo, gap),
                 _diverge(a, b, ha, hb, d, nearest, hi, victim.body.width / 2.0, rear),
             )
         else:
-            meets = (_swerve_into(a, ha, hb, d, nearest, lo, gap),)
+            meets = (_swerve_into(ha, hb, apart, nearest, lo, gap),)
         for meet in meets:
             if meet is not None:
                 s_striker, u, turn = meet
@@ -126,7 +127,7 @@ def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> li
         i = lo + int(np.argmin(d[np.arange(lo, hi + 1), nearest[lo : hi + 1]]))
         if side:
             # a front meets a side before the lines cross, where its leading corner reaches it
-            met = _face_reaches(d, angle, nearest, i, striker.body.width / 2.0, victim.body.width / 2.0)
+            met = _face_reaches(apart, angle, nearest, i, striker.body.width / 2.0, victim.body.width / 2.0)
             if met is None and angle[i] < SHALLOW:
                 continue  # never that far apart just before: the end of a shared stretch
             s_striker, u = met if met is not None else (float(sa[i]), float(sb[nearest[i]]))
@@ -135,7 +136,7 @@ def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> li
         if angle[i] < SHALLOW:
             # bodies touch well before shallow lines cross: meet where they are `gap` apart; lines
             # never that far apart just before are the end of a shared stretch (a diverge, above)
-            back = _apart_before(d, i, gap)
+            back = _apart_before(apart, i, gap)
             if back is None:
                 continue
             i = back
@@ -158,13 +159,13 @@ def _along_face(
     ahead of a rear-end's striker) last runs with the striker: past that the victim has turned
     out of the lane they share, and a striker there meets it angled away, in no rear-end."""
     j = np.clip(np.rint((offset + sign * sa[lo : hi + 1]) / STEP).astype(int), 0, len(hb) - 1)
-    angle = np.abs((ha[lo : hi + 1] - hb[j] + 180.0) % 360.0 - 180.0)
+    angle = np.abs(angle_diffs(ha[lo : hi + 1], hb[j]))
     along = np.flatnonzero((angle < ALONG) if sign == 1 else (angle > 180.0 - ALONG))
     return (lo, lo + int(along[-1])) if len(along) else (lo, lo)
 
 
 def _face_reaches(
-    d: np.ndarray, angle: np.ndarray, nearest: np.ndarray, i: int, half_striker: float, half_victim: float
+    apart: np.ndarray, angle: np.ndarray, nearest: np.ndarray, i: int, half_striker: float, half_victim: float
 ) -> tuple[float, float] | None:
     """Where, at or before striker point `i` (within APART_WITHIN), its front's leading corner,
     (half_striker) cos(angle) nearer the victim's line than its middle, is SIDE_OVERLAP into the
@@ -174,8 +175,8 @@ def _face_reaches(
     rad = np.radians(angle)
     # deeper the steeper: a steep front closes fast, and a deeper touch is not lost if they part
     reach = half_victim + half_striker * np.abs(np.cos(rad)) - SIDE_OVERLAP - half_victim * np.sin(rad) / 2.0
-    gap = d.min(axis=1) - reach
-    b = next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if gap[b] >= 0.0), None)
+    gap = apart - reach
+    b = _last_at_least(gap, i, 0.0)
     if b is None:
         return None
     if b == i:
@@ -184,13 +185,18 @@ def _face_reaches(
     return (b + t) * STEP, float(nearest[b] + t * (nearest[b + 1] - nearest[b])) * STEP
 
 
-def _apart_before(d: np.ndarray, i: int, gap: float) -> int | None:
+def _apart_before(apart: np.ndarray, i: int, gap: float) -> int | None:
     """The last striker point at or before `i` (within APART_WITHIN) at least `gap` from the victim's line."""
-    return next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if d[b].min() >= gap), None)
+    return _last_at_least(apart, i, gap)
+
+
+def _last_at_least(values: np.ndarray, i: int, floor: float) -> int | None:
+    """The last index at or before `i`, within APART_WITHIN of it, whose value is at least `floor`."""
+    return next((b for b in range(i, max(-1, i - int(APART_WITHIN / STEP)), -1) if values[b] >= floor), None)
 
 
 def _merge(
-    ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int, gap: float
+    ha: np.ndarray, hb: np.ndarray, d: np.ndarray, apart: np.ndarray, nearest: np.ndarray, lo: int, gap: float
 ) -> tuple[float, float, float] | None:
     """Where two lines that come from different places join one lane, as (s, u, angle): the
     lines converge at a shallow angle, and the side of one meets the other's front where they
@@ -200,9 +206,9 @@ def _merge(
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if lo < k or j < k:
             return None
-        if d[lo - k].min() > APART or d[:, j - k].min() > APART:
+        if apart[lo - k] > APART or d[:, j - k].min() > APART:
             angle = max(_turn(ha[lo - k], hb[j - k]), 5.0)
-            back = _apart_before(d, lo, gap)
+            back = _apart_before(apart, lo, gap)
             back = lo if back is None else back
             return back * STEP, float(nearest[back]) * STEP, angle
     return None
@@ -240,7 +246,7 @@ def _diverge(
 
 
 def _swerve_into(
-    a: np.ndarray, ha: np.ndarray, hb: np.ndarray, d: np.ndarray, nearest: np.ndarray, lo: int, gap: float
+    ha: np.ndarray, hb: np.ndarray, apart: np.ndarray, nearest: np.ndarray, lo: int, gap: float
 ) -> tuple[float, float, float] | None:
     """Where the striker's line swerves into a lane the victim drives the other way, as
     (s, u, angle): its front, still angled, meets the oncoming victim's side where the lines
@@ -248,8 +254,8 @@ def _swerve_into(
     for k in range(int(MERGE_BACK / STEP), int(APART_WITHIN / STEP) + 1):
         if lo < k:
             return None
-        if d[lo - k].min() > APART:
-            back = _apart_before(d, lo, gap)
+        if apart[lo - k] > APART:
+            back = _apart_before(apart, lo, gap)
             back = lo if back is None else back
             return back * STEP, float(nearest[back]) * STEP, _turn(ha[lo - k], hb[int(nearest[lo])])
     return None

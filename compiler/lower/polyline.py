@@ -9,7 +9,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
-from sovarc.compiler.maps.geometry import distances_to
+from sovarc.compiler.maps.geometry import angle_diffs, distances_to
 
 Point = tuple[float, float]
 
@@ -100,7 +100,7 @@ class Polyline:
         the window's length over the turn between the headings at its two ends."""
         a = np.maximum(0.0, self.s - window / 2)
         b = np.minimum(self.length, self.s + window / 2)
-        turn = np.abs(_angle_diffs(self._headings(b - 1e-6), self._headings(a)))
+        turn = np.abs(angle_diffs(self._headings(b - 1e-6), self._headings(a)))
         radii = np.full(len(self.s), np.inf)
         bent = (b - a >= 1.0) & (turn > 1e-3)
         radii[bent] = (b - a)[bent] / np.radians(turn[bent])
@@ -170,9 +170,3 @@ def _vertex_normals(points: np.ndarray) -> np.ndarray:
     right = np.column_stack((d[:, 1], -d[:, 0]))
     normals = np.vstack([right[:1], (right[:-1] + right[1:]) / 2.0, right[-1:]])
     return normals / np.maximum(np.hypot(*normals.T), 1e-12)[:, None]
-
-
-def _angle_diffs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """`angle_diff` element-wise: signed a - b in (-180, 180]."""
-    d = (a - b) % 360.0
-    return np.where(d > 180.0, d - 360.0, d)

@@ -34,6 +34,7 @@ from typing import Any
 import z3
 from sovarc.compiler.lower.contact import Contact
 from sovarc.compiler.lower.route import LEAD, Route
+from sovarc.compiler.maps.geometry import angle_diff
 from sovarc.dsl.ir import ActionKind, CrashType, Role
 
 A_UP = 2.0  # m/s^2, starting from rest
@@ -301,7 +302,7 @@ def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> 
 def _start_together(a: Route, b: Route) -> bool:
     """The two lines begin at one place, going one way."""
     gap = math.dist(a.line.point(0.0), b.line.point(0.0))
-    turn = abs((a.line.heading(0.0) - b.line.heading(0.0) + 180.0) % 360.0 - 180.0)
+    turn = abs(angle_diff(a.line.heading(0.0), b.line.heading(0.0)))
     return gap < START_TOUCH and turn < 20.0
 
 

@@ -30,6 +30,12 @@ def angle_diff(a: float, b: float) -> float:
     return d - 360.0 if d > 180.0 else d
 
 
+def angle_diffs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """`angle_diff` element-wise: signed a - b in (-180, 180]."""
+    d = (a - b) % 360.0
+    return np.where(d > 180.0, d - 360.0, d)
+
+
 def shape_length(shape: Sequence[Point]) -> float:
     return sum(math.dist(p, q) for p, q in itertools.pairwise(shape))
 
