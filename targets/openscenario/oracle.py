@@ -2,9 +2,10 @@
 
     check(xosc_path, plan=None) -> Verdict
 
-Schema validity (the .xosc and its .xodr), then a kinematic re-check of the trajectories as
-the file encodes them (see motion.py and crash.py). The plan, when given, only names the
-scenario and site in the verdict; every judgement comes from the file.
+Schema validity (the .xosc and its .xodr), ASAM's Quality Checker rules (asam_qc.py), then a
+kinematic re-check of the trajectories as the file encodes them (see motion.py and crash.py).
+The plan, when given, only names the scenario and site in the verdict; every judgement comes
+from the file.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from typing import Any
 from lxml import etree
 from sovarc.compiler.plan import Plan
 from sovarc.targets.openscenario import provenance as p
+from sovarc.targets.openscenario.asam_qc import qc_finding
 from sovarc.targets.openscenario.crash import Crash, crash_findings
 from sovarc.targets.openscenario.motion import single_trajectories, speed_findings, teleport_findings, timing_findings
 from sovarc.targets.openscenario.readback import ScenarioFile, read_scenario
@@ -67,7 +69,7 @@ def _crash(scenario: ScenarioFile) -> Crash | str:
 
 
 def judge(scenario: ScenarioFile) -> tuple[list[Finding], dict[str, Any]]:
-    findings = [xsd_finding(scenario)]
+    findings = [xsd_finding(scenario), qc_finding(scenario.path, scenario.doc)]
     xodr, xodr_path = xodr_finding(scenario)
     findings.append(xodr)
     facts: dict[str, Any] = {

@@ -3,6 +3,7 @@ every version, and a mutated file fails with a reason that names what is wrong."
 
 from __future__ import annotations
 
+import copy
 import shutil
 from collections.abc import Callable
 from dataclasses import replace
@@ -11,7 +12,7 @@ from pathlib import Path
 import pytest
 from lxml import etree
 from sovarc.compiler.plan import Sample
-from sovarc.targets.openscenario import VERSIONS, check, emit_files
+from sovarc.targets.openscenario import VERSIONS, asam_qc, check, emit_files
 from sovarc.targets.verdict import Verdict
 
 from tests.targets.openscenario.conftest import Emitter
@@ -28,7 +29,9 @@ def test_every_case_passes_in_every_version(emitted: Emitter, case: str, version
     assert verdict.passed, verdict.dumps()
     assert (verdict.target, verdict.scenario, verdict.site) == ("openscenario", plan.scenario.name, plan.site)
     checks = {f.check for f in verdict.findings}
-    assert {"xsd", "xodr", "teleports", "speed", "collision_area", "first_contact", "impact_angle"} <= checks
+    assert {"xsd", "asam_qc", "xodr", "teleports", "speed", "collision_area", "first_contact", "impact_angle"} <= checks
+    ran = int(next(f.message for f in verdict.findings if f.check == "asam_qc").split(": ")[1].split()[0])
+    assert ran == (5 if version in ("1.0", "1.1") else 17)  # ASAM's reference rules are defined from 1.2 on
     assert verdict.facts["first_contact_time"] == pytest.approx(plan.impact.time, abs=0.05)
     assert verdict.facts["version"] == f"1.{version[-1]}"
 
@@ -84,6 +87,34 @@ def test_a_header_that_names_another_version_fails_that_version_s_schema(emitted
     assert "Element 'Vehicle', attribute 'mass'" in older["xsd"]  # a 1.1 attribute
     unknown = failed(mutated(emitted, tmp_path, "t_bone", lambda r: r.find("FileHeader").set("revMinor", "9")))
     assert unknown["xsd"] == "OpenSCENARIO 1.9 is not a version the oracle knows (1.0, 1.1, 1.2, 1.3)"
+
+
+def test_an_undeclared_entity_fails_asam_s_reference_rule_with_its_line(emitted: Emitter, tmp_path: Path) -> None:
+    def rename_actor(root: etree._Element) -> None:
+        root.find(".//ManeuverGroup/Actors/EntityRef").set("entityRef", "V9")
+
+    message = failed(mutated(emitted, tmp_path, "t_bone", rename_actor))["asam_qc"]
+    assert message.startswith("ASAM Quality Checker: 1 issue(s): reference_control.resolvable_entity_references:")
+    assert "<EntityRef>" in message and "line " in message
+
+
+def test_two_events_of_one_name_on_a_level_fail_asam_s_uniqueness_rule(emitted: Emitter, tmp_path: Path) -> None:
+    def twin_events(root: etree._Element) -> None:
+        maneuver = root.find(".//Maneuver")
+        maneuver.append(copy.deepcopy(maneuver.find("Event")))
+
+    message = failed(mutated(emitted, tmp_path, "t_bone", twin_events))["asam_qc"]
+    assert "reference_control.unique_element_names_on_same_level" in message
+
+
+def test_without_asam_s_checker_the_finding_says_how_to_install_it(
+    emitted: Emitter, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _, files = emitted("t_bone")
+    monkeypatch.setattr(asam_qc, "_bundle", lambda: None)
+    finding = asam_qc.qc_finding(files.xosc)
+    assert not finding.passed
+    assert finding.message.endswith("pip install asam-qc-openscenarioxml")
 
 
 def test_a_victim_that_arrives_late_misses_the_collision_area(emitted: Emitter, tmp_path: Path) -> None:
