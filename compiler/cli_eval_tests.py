@@ -111,9 +111,10 @@ def tests_table(
         kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
         try:
             results = plans_for(scenario, road_map, roads, seed, spare)
-        except SovarcError as exc:  # no site of its kind could be chosen
+        except SovarcError as exc:  # facts no road can reconcile, or no site of its kind
+            why = "unsat" if isinstance(exc, UnsatError) else "no fitting site"
             for _ in range(roads):
-                table.add_unplanned(scenario.name, kind, "-", "no fitting site", first_message(exc))
+                table.add_unplanned(scenario.name, kind, "-", why, first_message(exc))
             continue
         for r in results:
             if r.plan is None:

@@ -15,6 +15,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
 from sovarc.compiler.lower.assume import COMPASS, assume
+from sovarc.compiler.lower.consistency import check_headings
 from sovarc.compiler.lower.contact import Contact, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
@@ -58,6 +59,7 @@ def sites_for(
 ) -> tuple[Scenario, list[str], list[SiteMatch]]:
     """The scenario with its unknown facts filled, the notes saying how, and the sites chosen for it."""
     staged, notes = assume(scenario)
+    check_headings(staged)
     return staged, notes, match_sites(staged, road_map, n=roads, seed=seed, clamp=True)
 
 
