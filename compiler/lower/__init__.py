@@ -402,7 +402,7 @@ def _no_contact(
     scenario: Scenario, match: SiteMatch, striker: Route, victim: Route, crash: CrashType
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
-    how = "; ".join(describe(c) for c in seen) or "their paths never meet"
+    how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
     message = (
         f"on {match.site.id}, {striker.participant.id} cannot strike {victim.participant.id} as a {crash.value} "
         f"crash needs: {how}"
