@@ -69,12 +69,15 @@ def needs_crop(data: bytes) -> bool:
 
 
 @functools.lru_cache(maxsize=32)
-def crop(data: bytes, box: Box) -> bytes:
-    """The network `data` (a .net.xml) cut down to `box` as described above."""
+def crop(data: bytes, box: Box, routes: frozenset[str] = frozenset()) -> bytes:
+    """The network `data` (a .net.xml) cut down to `box` as described above. The junctions at
+    both ends of each edge in `routes` are kept whole too, so every route stays connected even
+    where it runs on past the trajectories (a crash 200 m before the junction its route crosses)."""
     root = etree.fromstring(data, etree.XMLParser(remove_comments=False, huge_tree=True))
     junctions = {j.get("id"): j for j in root.iter("junction")}
     full = {jid for jid, j in junctions.items() if not jid.startswith(":") and box.holds(_f(j, "x"), _f(j, "y"))}
     edges = list(root.iter("edge"))
+    full |= {str(e.get(end)) for e in edges if e.get("id") in routes for end in ("from", "to")}
     kept: set[str] = set()
     for edge in edges:
         eid = edge.get("id", "")

@@ -93,7 +93,8 @@ def copy_network(plan: Plan, out: Path) -> Path:
     else:
         raise InputError(Diagnostic("the SUMO target needs a .net.xml or .xodr map", Span.whole_file(plan.map)))
     if needs_crop(data):
-        data = crop(data, Box.around([(s.x, s.y) for t in plan.trajectories for s in t.samples]))
+        box = Box.around([(s.x, s.y) for t in plan.trajectories for s in t.samples])
+        data = crop(data, box, frozenset(e for t in plan.trajectories for e in t.edges))
     if not target.exists() or target.read_bytes() != data:
         target.write_bytes(data)
     return target

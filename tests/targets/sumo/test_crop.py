@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 import sumo
+from lxml import etree
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.synth import synthesize
@@ -78,3 +79,25 @@ def test_a_city_plan_emits_a_cropped_network_and_replays_the_crash(tmp_path: Pat
     emit(plan, again)
     assert (again / "osm.net.xml").read_bytes() == net.read_bytes()
     assert config.is_file()
+
+
+def test_a_route_running_past_the_box_keeps_its_edges_and_the_junction_between_them() -> None:
+    whole = etree.fromstring(CITY.read_bytes(), etree.XMLParser(huge_tree=True))
+    junctions = {j.get("id"): j for j in whole.iter("junction")}
+    ends = {e.get("id"): e.get("to") for e in whole.iter("edge") if not e.get("function")}
+    # a turn between two normal edges at a junction well outside BOX
+    link = next(
+        c
+        for c in whole.iter("connection")
+        if c.get("from") in ends
+        and c.get("to") in ends
+        and c.get("via")
+        and float(junctions[ends[c.get("from")]].get("x")) > BOX.x1 + 500.0
+    )
+    route = frozenset({link.get("from"), link.get("to")})
+    part = etree.fromstring(crop(CITY.read_bytes(), BOX, route))
+    kept = {e.get("id") for e in part.iter("edge")}
+    assert route <= kept
+    assert any(c.get("from") == link.get("from") and c.get("to") == link.get("to") for c in part.iter("connection"))
+    plain = etree.fromstring(crop(CITY.read_bytes(), BOX))
+    assert not route <= {e.get("id") for e in plain.iter("edge")}  # without the route, both are cut
