@@ -23,7 +23,7 @@ from typing import Any
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import RoadMap, SiteMatch, load_map
 from sovarc.compiler.plan import Plan, dump_plan
-from sovarc.dsl.errors import SovarcError
+from sovarc.dsl.errors import LoweringError, SovarcError
 from sovarc.dsl.ir import Scenario
 
 TARGETS = ("sumo", "openscenario", "fmu")
@@ -74,6 +74,10 @@ def plan_site(staged: Scenario, notes: list[str], road_map: RoadMap, match: Site
         result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
     except SovarcError as exc:
         result.error = exc
+    except Exception as exc:  # a defect met on this site's geometry: said, and the next site is tried
+        defect = f"{type(exc).__name__}: {exc}"
+        message = f"on {match.site.id}, sovarc failed on this site's geometry ({defect}); please report it"
+        result.error = LoweringError(message)
     return result
 
 

@@ -6,6 +6,7 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
+import pytest
 from sovarc.compiler.backend import SiteResult, fill_slots, plans_for, summary
 from sovarc.compiler.maps import load_map
 from sovarc.dsl import parse
@@ -113,3 +114,27 @@ def test_the_output_folder_says_which_sites_were_given_up(tmp_path: Path) -> Non
     assert written == result.stdout and "could not host the crash" in written
     given_up = [line.split()[1] for line in written.splitlines() if line.startswith("note:")]
     assert given_up and not any((tmp_path / "out" / name.replace(":", "_")).exists() for name in given_up)
+
+
+def test_a_defect_on_one_site_is_that_site_s_error_and_the_next_site_is_tried(monkeypatch: pytest.MonkeyPatch) -> None:
+    import sovarc.compiler.synth as synth
+
+    real = synth.synthesize
+    calls: list[str] = []
+
+    def breaks_first(lowered: object, seed: int = 0) -> object:
+        calls.append(lowered.match.site.id)  # type: ignore[attr-defined]
+        if len(calls) == 1:
+            raise ValueError("a polyline needs two distinct points")
+        return real(lowered, seed=seed)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(synth, "synthesize", breaks_first)
+    scenario = parse((EXAMPLES / "scenarios" / "straight_rear_end_stopped_traffic.sov").read_text(), "s.sov")
+    [slot] = plans_for(scenario, load_map(EXAMPLES / "maps" / "town.net.xml"), roads=1, seed=0)
+    assert slot.plan is not None and slot.site == calls[1]
+    [given_up] = slot.skipped
+    message = given_up.error.diagnostics[0].message  # type: ignore[union-attr]
+    assert message == (
+        f"on {calls[0]}, sovarc failed on this site's geometry "
+        "(ValueError: a polyline needs two distinct points); please report it"
+    )
