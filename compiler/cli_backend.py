@@ -196,11 +196,18 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
                 rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
             missing = args.roads - len(results)
             rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
-        report[Path(map_path).name] = {"rows": rows}
-        print(_srr_table(Path(map_path).name, rows))
+        report[_map_key(map_path, maps)] = {"rows": rows}
+        print(_srr_table(_map_key(map_path, maps), rows))
     if args.json:
         write_atomic(args.json, json.dumps(report, indent=2) + "\n")
     return EXIT_OK
+
+
+def _map_key(map_path: str, maps: list[str]) -> str:
+    """A map's file name, or the path as given when another map has the same name (two cities'
+    osm.net.xml), so that no map's rows overwrite another's in the JSON."""
+    name = Path(map_path).name
+    return name if [Path(m).name for m in maps].count(name) == 1 else map_path
 
 
 def _row(path: Path, kind: str, site: str, failure: str | None, reason: str) -> dict[str, object]:

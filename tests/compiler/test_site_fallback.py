@@ -138,3 +138,17 @@ def test_a_defect_on_one_site_is_that_site_s_error_and_the_next_site_is_tried(mo
         f"on {calls[0]}, sovarc failed on this site's geometry "
         "(ValueError: a polyline needs two distinct points); please report it"
     )
+
+
+def test_eval_srr_keeps_two_maps_of_one_file_name_apart(tmp_path: Path) -> None:
+    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
+    maps = []
+    for city in ("a", "b"):
+        (tmp_path / city).mkdir()
+        maps += ["-m", str(tmp_path / city / "town.net.xml")]
+        (tmp_path / city / "town.net.xml").write_bytes((EXAMPLES / "maps" / "town.net.xml").read_bytes())
+    out = tmp_path / "srr.json"
+    done = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), *maps, "--roads", "1", "--json", str(out))
+    assert done.returncode == 0, done.stderr
+    assert list(json.loads(out.read_text(encoding="utf-8"))) == [maps[1], maps[3]]
+    assert f"SRR on {maps[1]}" in done.stdout and f"SRR on {maps[3]}" in done.stdout
