@@ -19,9 +19,13 @@ class Polyline:
 
     __slots__ = ("points", "s")
 
-    def __init__(self, points: Sequence[Point] | np.ndarray) -> None:
+    def __init__(self, points: Sequence[Point] | np.ndarray, *, min_gap: float | None = None) -> None:
+        """With `min_gap`, a point within that distance of the last one kept is dropped too (the FMU
+        harness's paths through the samples of a slow car, whose tiny steps have no reliable direction)."""
         array = np.asarray(points, dtype=float).reshape(-1, 2)
-        if len(array) >= 2:  # drop repeated vertices: they have no direction
+        if min_gap is not None:
+            array = array[_spaced(array, min_gap)]
+        elif len(array) >= 2:  # drop repeated vertices: they have no direction
             keep = np.concatenate(([True], np.hypot(*np.diff(array, axis=0).T) > 1e-9))
             array = array[keep]
         if len(array) < 2:
@@ -34,12 +38,24 @@ class Polyline:
         return float(self.s[-1])
 
     def point(self, s: float) -> Point:
+        """The point at arc length s, clamped to the ends (`point_at` goes on past them)."""
         s = min(max(s, 0.0), self.length)
         return (float(np.interp(s, self.s, self.points[:, 0])), float(np.interp(s, self.s, self.points[:, 1])))
 
     def heading(self, s: float) -> float:
         """Direction of travel at arc length s (of the segment containing it)."""
-        return float(self._headings(np.array([s]))[0])
+        return float(self.headings(np.array([s]))[0])
+
+    def point_at(self, s: float) -> Point:
+        """The point at arc length s; past either end the line goes on straight."""
+        x, y = self.points_at(np.array([s]))[0]
+        return (float(x), float(y))
+
+    def points_at(self, s: np.ndarray) -> np.ndarray:
+        """`point_at` for many arc lengths (a 1-D array): n x 2."""
+        k = self._segments(s)
+        d = self.points[k + 1] - self.points[k]
+        return self.points[k] + (s - self.s[k])[:, None] * (d / np.hypot(d[:, 0], d[:, 1])[:, None])
 
     def sub(self, start: float, end: float) -> Polyline:
         """The part between two arc lengths (start < end)."""
@@ -86,6 +102,27 @@ class Polyline:
         k = int(np.argmin(d))
         return float(self.s[k] + u[k] * math.sqrt(lengths2[k])), float(d[k])
 
+    def project_within(self, p: Point, lo: float = -math.inf, hi: float = math.inf) -> tuple[float, float]:
+        """(s, distance) of the point nearest p among arc lengths in [lo, hi], the line going on straight
+        past either end (`project` keeps to the line): the FMU harness follows a car along its route."""
+        last_segment = len(self.s) - 2
+        first = int(self._segments(lo)) if lo > 0 else 0
+        last = int(self._segments(hi)) if hi < self.length else last_segment
+        a = self.points[first : last + 1]
+        step = self.points[first + 1 : last + 2] - a
+        n = np.hypot(step[:, 0], step[:, 1])
+        d = step / n[:, None]
+        rel = np.array(p) - a
+        u = np.clip(np.einsum("ij,ij->i", rel, d), 0.0, n)
+        if first == 0:  # before the start, the line goes on straight
+            u[0] = min(float(rel[0] @ d[0]), float(n[0]))
+        if last == last_segment:  # and past the end
+            u[-1] = max(float(rel[-1] @ d[-1]), 0.0)
+        dist = np.hypot(*(rel - u[:, None] * d).T)
+        best = int(np.argmin(dist))
+        s = float(self.s[first + best] + u[best])
+        return min(max(s, lo), hi), float(dist[best])
+
     def distances(self, points: np.ndarray) -> np.ndarray:
         """For each of `points` (n x 2), its distance to the line: `project` for many points at once."""
         return distances_to(self.points, points)
@@ -100,17 +137,21 @@ class Polyline:
         the window's length over the turn between the headings at its two ends."""
         a = np.maximum(0.0, self.s - window / 2)
         b = np.minimum(self.length, self.s + window / 2)
-        turn = np.abs(angle_diffs(self._headings(b - 1e-6), self._headings(a)))
+        turn = np.abs(angle_diffs(self.headings(b - 1e-6), self.headings(a)))
         radii = np.full(len(self.s), np.inf)
         bent = (b - a >= 1.0) & (turn > 1e-3)
         radii[bent] = (b - a)[bent] / np.radians(turn[bent])
         return radii
 
-    def _headings(self, at: np.ndarray) -> np.ndarray:
-        """`heading` at many arc lengths: compass degrees of the segments containing them."""
-        k = np.clip(np.searchsorted(self.s, at, side="right") - 1, 0, len(self.s) - 2)
+    def headings(self, at: np.ndarray) -> np.ndarray:
+        """`heading` at many arc lengths (an array of any shape): compass degrees of the segments containing them."""
+        k = self._segments(at)
         d = self.points[k + 1] - self.points[k]
-        return np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0
+        return np.degrees(np.arctan2(d[..., 0], d[..., 1])) % 360.0
+
+    def _segments(self, at: np.ndarray | float) -> np.ndarray:
+        """The index of the segment containing each arc length (the first or last past the ends)."""
+        return np.clip(np.searchsorted(self.s, at, side="right") - 1, 0, len(self.s) - 2)
 
 
 def concat(parts: Iterable[Polyline]) -> Polyline:
@@ -161,6 +202,16 @@ def unit(heading: float) -> Point:
     """The unit vector of a compass heading."""
     rad = math.radians(heading)
     return (math.sin(rad), math.cos(rad))
+
+
+def _spaced(points: np.ndarray, gap: float) -> list[int]:
+    """The indices of the points kept when each one within `gap` of the last one kept is dropped."""
+    rows = points.tolist()
+    kept = [0] if rows else []
+    for k in range(1, len(rows)):
+        if math.dist(rows[kept[-1]], rows[k]) > gap:
+            kept.append(k)
+    return kept
 
 
 def _vertex_normals(points: np.ndarray) -> np.ndarray:

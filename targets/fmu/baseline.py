@@ -16,9 +16,10 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
+from sovarc.compiler.lower.polyline import Point, Polyline
 from sovarc.compiler.plan import Plan, Sample, Segment, Trajectory
 from sovarc.dsl.errors import OracleError
-from sovarc.targets.fmu.polyline import Point, Polyline
+from sovarc.targets.fmu.task import PATH_GAP
 
 SPEED_RANGE = (0.5, 1.0)  # share of the lane's speed limit an NPC drives at
 WALK = (1.0, 1.6)  # m/s, a pedestrian's pace
@@ -74,7 +75,7 @@ def _random_trajectory(plan: Plan, template: Trajectory, site: Any, net: Any, rn
         link = rng.choice(site.connections)
         parts = [link.from_lane] + ([link.via] if link.via else []) + [link.to_lane]
         shapes = [net.getLane(lane).getShape() for lane in parts]
-        arrive_at = Polyline(shapes[0]).length
+        arrive_at = Polyline(shapes[0], min_gap=PATH_GAP).length
         limit = net.getLane(link.from_lane).getSpeed()
         speed = rng.uniform(*SPEED_RANGE) * limit
         start = max(arrive_at - speed * rng.uniform(1.0, max(plan.duration, 1.5)), 0.0)
@@ -85,7 +86,7 @@ def _random_trajectory(plan: Plan, template: Trajectory, site: Any, net: Any, rn
         speed = rng.uniform(*SPEED_RANGE) * lane.speed
         start = rng.uniform(0.0, 0.6 * lane.length)
     points = [p for shape in shapes for p in shape]
-    path = Polyline(points)
+    path = Polyline(points, min_gap=PATH_GAP)
     samples = _drive(path, start, speed, plan)
     edges = tuple(dict.fromkeys(net.getLane(lane).getEdge().getID() for lane in parts))
     end = speed * plan.duration
@@ -115,6 +116,6 @@ def _drive(path: Polyline, start: float, speed: float, plan: Plan) -> tuple[Samp
     s = start + speed * times
     points = path.points_at(s)
     return tuple(
-        Sample(float(t), float(x), float(y), path.heading_at(float(at)), speed)
+        Sample(float(t), float(x), float(y), path.heading(float(at)), speed)
         for t, (x, y), at in zip(times, points, s, strict=True)
     )

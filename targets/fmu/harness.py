@@ -18,12 +18,12 @@ import time as clock
 from dataclasses import dataclass
 
 import numpy as np
+from sovarc.compiler.lower.polyline import Point
 from sovarc.compiler.plan import Body, Plan, Sample, Trajectory
 from sovarc.targets.fmu.bicycle import Geometry, State, advance
 from sovarc.targets.fmu.driver import Driver
 from sovarc.targets.fmu.geometry import centre, corners, overlap
 from sovarc.targets.fmu.interface import MAX_OBJECTS, PERCEPTION_RANGE, STEP
-from sovarc.targets.fmu.polyline import Point
 from sovarc.targets.fmu.task import EgoTask, make_task, to_ego_frame
 from sovarc.targets.fmu.world import World
 
@@ -108,7 +108,7 @@ def run_test(plan: Plan, ego: str, driver: Driver, world: World) -> Run:
             times.append(t)
             for name, pose in poses.items():
                 rows[name].append(pose)
-            s = task.route.project((ex, ey), s - 2.0, s + 25.0)[0]
+            s = task.route.project_within((ex, ey), s - 2.0, s + 25.0)[0]
             progress.append(s)
             hit = _first_contact(ego, poses, bodies)
             if hit is not None:

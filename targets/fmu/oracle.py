@@ -190,7 +190,7 @@ def _blocked(run: Run) -> str | None:
     s = float(run.progress[-1])
     route = run.task.route
     ahead = np.arange(s, min(s + BLOCKED_AHEAD, route.length), 1.0)
-    poses = [(*route.point_at(float(a)), route.heading_at(float(a))) for a in ahead]
+    poses = [(*route.point_at(float(a)), route.heading(float(a))) for a in ahead]
     for name in sorted(run.tracks):
         track = run.tracks[name]
         if name == run.ego or float(track.speed[-1]) > max(speed, MOVING) + HELD_UP:
@@ -242,7 +242,7 @@ def _along_route(run: Run, steps: np.ndarray) -> Future:
     here = run.progress[steps]
     s = here[:, None] + ego.speed[steps, None] * ticks()[None, :]
     ahead = route.points_at(s.ravel()).reshape(*s.shape, 2) - route.points_at(here)[:, None, :]
-    turn = route.headings_at(s) - route.headings_at(here)[:, None]
+    turn = route.headings(s) - route.headings(here)[:, None]
     return (
         ego.x[steps, None] + ahead[..., 0],
         ego.y[steps, None] + ahead[..., 1],

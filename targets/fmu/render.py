@@ -25,7 +25,7 @@ def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
         for lane in run.lanes:
             xs, ys = zip(*lane, strict=True)
             ax.plot(xs, ys, color="#cccccc", linewidth=6, solid_capstyle="butt", zorder=1)
-        route = run.task.route.xy
+        route = run.task.route.points
         ax.plot(route[:, 0], route[:, 1], "--", color=EGO_COLOUR, linewidth=0.8, zorder=2, label="ego route")
         goal = run.task.route.point_at(run.task.goal)
         ax.plot(*goal, marker="*", color=EGO_COLOUR, markersize=12, zorder=5, label="goal")

@@ -18,9 +18,9 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from sovarc.compiler.lower.polyline import Point, Polyline, unit
 from sovarc.compiler.plan import Plan, Sample, Trajectory
 from sovarc.targets.fmu.interface import PATH_POINTS, PATH_SPACING
-from sovarc.targets.fmu.polyline import Point, Polyline
 
 GOAL_MARGIN = 10.0  # m past the planned path's end
 MIN_CRUISE = 3.0  # m/s: the slowest speed a route asks for
@@ -33,6 +33,7 @@ JOIN_REACH = 15.0  # m: the route goes on along a lane of its last edge only thi
 # end inside the junction, short of the lane's start)
 JOIN_TURN = 60.0  # deg: ... and only one that runs within this of the path's final heading
 JOIN_AHEAD = 4.0  # m along that lane from the path's end to where the route joins it
+PATH_GAP = 0.05  # m: a route or an NPC's path drops each point this near the last one it kept
 
 LaneShapes = Callable[[str], Sequence[tuple[str, Sequence[Point]]]]  # edge id -> (lane id, centre line) per lane
 
@@ -79,27 +80,30 @@ def make_task(plan: Plan, participant: str, lane_shapes: LaneShapes | None = Non
     if start.speed < 0.0:  # the ego does not reverse: it starts at rest
         start = Sample(start.t, start.x, start.y, start.heading, 0.0)
     extra = GOAL_MARGIN + PATH_POINTS * PATH_SPACING + 20.0
-    points = _distinct([(s.x, s.y) for s in samples])
-    if len(points) < 2 or Polyline(points).length < HOLD_PATH:
+    try:
+        planned: Polyline | None = Polyline([(s.x, s.y) for s in samples], min_gap=PATH_GAP)
+    except ValueError:  # it never moves
+        planned = None
+    if planned is None or planned.length < HOLD_PATH:
         rad = math.radians(start.heading)
         route = Polyline([(start.x, start.y), (start.x + extra * math.sin(rad), start.y + extra * math.cos(rad))])
         budget = min(MAX_BUDGET, plan.duration + BUDGET_SLACK)
         return EgoTask(participant, trajectory, start, route, 0.0, HOLD_RADIUS, np.zeros(1), 0.0, budget, hold=True)
-    planned = Polyline(points)
     towards = _continuation(trajectory, planned, lane_shapes) if lane_shapes else []
-    route = planned.extended(extra, towards)
+    route = extended(planned, extra, towards)
     path_end = planned.length
     profile, cruise = _speed_profile(samples, path_end)
     budget = min(MAX_BUDGET, plan.duration + GOAL_MARGIN / cruise + BUDGET_SLACK)
     return EgoTask(participant, trajectory, start, route, path_end, path_end + GOAL_MARGIN, profile, cruise, budget)
 
 
-def _distinct(points: list[Point]) -> list[Point]:
-    kept: list[Point] = []
-    for p in points:
-        if not kept or math.dist(kept[-1], p) > 0.05:
-            kept.append(p)
-    return kept
+def extended(line: Polyline, extra: float, towards: Sequence[Point] = ()) -> Polyline:
+    """The line, then `towards` (points beyond its end, e.g. a lane's centre line), then `extra` m straight on."""
+    points = [tuple(p) for p in line.points] + [tuple(p) for p in towards]
+    tail = Polyline(points, min_gap=PATH_GAP)
+    end, (dx, dy) = tail.point_at(tail.length), unit(tail.heading(tail.length))
+    points.append((end[0] + extra * dx, end[1] + extra * dy))
+    return Polyline(points, min_gap=PATH_GAP)
 
 
 def _speed_profile(samples: Sequence[Sample], path_end: float) -> tuple[np.ndarray, float]:
@@ -130,21 +134,21 @@ def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneSh
     if not edges:
         return []
     end = planned.point_at(planned.length)
-    heading = planned.heading_at(planned.length)
+    heading = planned.heading(planned.length)
     lanes = list(lane_shapes(edges[-1]))
     allowed = [(lane, shape) for lane, shape in lanes if lane in trajectory.lanes] or lanes
     best: tuple[float, Polyline, float] | None = None
     for _lane, shape in allowed:
         if len(shape) < 2:
             continue
-        line = Polyline(shape)
-        s, dist = line.project(end, 0.0, line.length)
-        turn = abs((line.heading_at(s) - heading + 180.0) % 360.0 - 180.0)
+        line = Polyline(shape, min_gap=PATH_GAP)
+        s, dist = line.project_within(end, 0.0, line.length)
+        turn = abs((line.heading(s) - heading + 180.0) % 360.0 - 180.0)
         if dist <= JOIN_REACH and turn <= JOIN_TURN and (best is None or dist < best[0]):
             best = (dist, line, s)
     if best is None:
         return []
     _, line, s = best
     join = s + JOIN_AHEAD  # a little ahead, so that a path ending mid-turn bends onto the lane
-    later = [tuple(p) for p, at in zip(line.xy, line.s, strict=True) if at > join]
+    later = [tuple(p) for p, at in zip(line.points, line.s, strict=True) if at > join]
     return [line.point_at(join), *later] if later or join < line.length else []

@@ -69,6 +69,6 @@ def _turning(run: Run, k: int) -> bool:
     at = np.arange(max(s - TURN_BEHIND, 0.0), min(s + TURN_AHEAD, route.length), 1.0)
     if len(at) < 2:
         return False
-    headings = np.array([route.heading_at(float(a)) for a in at])
+    headings = np.array([route.heading(float(a)) for a in at])
     turned = np.degrees(np.unwrap(np.radians(headings)))
     return float(turned.max() - turned.min()) > TURNING

@@ -12,9 +12,9 @@ from pathlib import Path
 from types import TracebackType
 from typing import Any
 
+from sovarc.compiler.lower.polyline import Point
 from sovarc.compiler.plan import Body
 from sovarc.dsl.errors import OracleError
-from sovarc.targets.fmu.polyline import Point
 
 KEEP_ROUTE = 2  # moveToXY: place exactly at (x, y), off the lanes if need be
 

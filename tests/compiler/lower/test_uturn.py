@@ -49,7 +49,7 @@ def test_a_tight_u_turn_is_a_round_curve_not_a_kink(width: float) -> None:
     _, turn = _turn(_road(2, width), 2)
     radii = turn.curvature_radius(window=2.0)
     assert radii.min() >= 0.95 * MIN_RADIUS
-    turns = np.abs((np.diff(turn._headings(turn.s[:-1] + 1e-6)) + 180.0) % 360.0 - 180.0)
+    turns = np.abs((np.diff(turn.headings(turn.s[:-1] + 1e-6)) + 180.0) % 360.0 - 180.0)
     assert turns.max() < 10.0  # degrees between neighbouring segments
 
 

@@ -8,10 +8,10 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
+from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Segment, Trajectory
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
-from sovarc.targets.fmu.polyline import Polyline
 
 from tests.conftest import EXAMPLES
 
@@ -101,7 +101,7 @@ def along(
     for t in np.arange(0.0, duration + 1e-9, STEP):
         s = start + speed * float(t)
         x, y = line.point_at(s)
-        samples.append(Sample(round(float(t), 3), x, y, line.heading_at(s), speed))
+        samples.append(Sample(round(float(t), 3), x, y, line.heading(s), speed))
     segment = Segment("go_across", start, start + speed * duration, 0.0, duration, speed)
     return Trajectory(name, Role.VEHICLE, CAR, tuple(samples), lanes, edges, (segment,), None)
 

@@ -6,8 +6,8 @@ from dataclasses import replace
 
 import pytest
 import sumolib
+from sovarc.compiler.lower.polyline import Polyline
 from sovarc.targets.fmu import random_npcs
-from sovarc.targets.fmu.polyline import Polyline
 
 from tests.targets.fmu.plans import TOWN, crossing, cut_in
 
@@ -22,7 +22,11 @@ def net() -> sumolib.net.Net:
 def _on_lanes(trajectory, net) -> float:
     """How far the trajectory's samples stray from the centre lines of its lanes (m)."""
     line = Polyline([p for lane in trajectory.lanes for p in net.getLane(lane).getShape()])
-    return max(line.project((s.x, s.y))[1] for s in trajectory.samples if line.project((s.x, s.y))[0] < line.length)
+    return max(
+        line.project_within((s.x, s.y))[1]
+        for s in trajectory.samples
+        if line.project_within((s.x, s.y))[0] < line.length
+    )
 
 
 def test_same_seed_same_npcs_other_seed_other_npcs() -> None:

@@ -8,11 +8,11 @@ from dataclasses import replace
 import numpy as np
 import pytest
 import sumolib
+from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.plan import CAR, PEDESTRIAN
 from sovarc.targets.fmu.bicycle import MAX_BRAKE, Geometry, State, advance
 from sovarc.targets.fmu.geometry import TICK, corners, overlap, straight_on, time_to_collision
-from sovarc.targets.fmu.polyline import Polyline
-from sovarc.targets.fmu.task import GOAL_MARGIN, MIN_CRUISE, make_task, to_ego_frame
+from sovarc.targets.fmu.task import GOAL_MARGIN, MIN_CRUISE, extended, make_task, to_ego_frame
 
 from tests.targets.fmu.plans import TOWN, car_following, eastbound
 
@@ -59,9 +59,9 @@ def test_time_to_collision_head_on_and_apart() -> None:
 def test_polyline_projection_and_extension() -> None:
     line = Polyline([(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)])
     assert line.length == pytest.approx(20.0)
-    assert line.project((12.0, 4.0)) == pytest.approx((14.0, 2.0))
-    assert line.heading_at(5.0) == pytest.approx(90.0) and line.heading_at(15.0) == pytest.approx(0.0)
-    longer = line.extended(5.0, towards=[(10.0, 12.0)])
+    assert line.project_within((12.0, 4.0)) == pytest.approx((14.0, 2.0))
+    assert line.heading(5.0) == pytest.approx(90.0) and line.heading(15.0) == pytest.approx(0.0)
+    longer = extended(line, 5.0, towards=[(10.0, 12.0)])
     assert longer.length == pytest.approx(27.0) and longer.point_at(27.0) == pytest.approx((10.0, 17.0))
     assert to_ego_frame(0.0, 10.0, 0.0, 0.0, 90.0) == pytest.approx((0.0, 10.0))  # facing east, north is left
 
@@ -93,7 +93,7 @@ def test_a_wrong_way_route_goes_on_straight_and_its_goal_stays_ahead() -> None:
     plan = replace(plan, trajectories=(wrong_way, plan.trajectory("V2")))
     task = make_task(plan, "V1", lanes)
     end = task.route.point_at(task.path_end)
-    assert task.route.heading_at(task.path_end + 1.0) == pytest.approx(90.0, abs=1.0)
+    assert task.route.heading(task.path_end + 1.0) == pytest.approx(90.0, abs=1.0)
     assert task.route.point_at(task.goal) == pytest.approx((end[0] + GOAL_MARGIN, 1.65), abs=0.1)
     right_way = make_task(car_following(), "V1", lanes)  # its own lane goes on east
     assert right_way.route.point_at(right_way.goal)[1] == pytest.approx(-8.25, abs=0.1)
