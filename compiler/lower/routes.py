@@ -17,6 +17,7 @@ import numpy as np
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
+from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
@@ -52,11 +53,12 @@ def vehicle_route(
         corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane, site=match.site.id
     )
     actions = p.known_actions
+    approach_lanes: tuple[LaneInfo, ...] = ()
     if match.site.kind is RoadKind.STRAIGHT:
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
         entry = None
     else:
-        entry = _through_junction(drive, p, match, road_map, side, prefer)
+        entry, approach_lanes = _through_junction(drive, p, match, road_map, side, prefer)
     events = order_stops(actions, drive.stretches, drive.line.length)
     first = min((e.lo for e in events if e.kind is not ActionKind.STOP), default=entry or drive.line.length * 0.6)
     if entry is not None:
@@ -65,6 +67,9 @@ def vehicle_route(
     # Smoothed once, here: the contact, the curve caps and the synthesized path all measure
     # arc length on the line the car really drives, so the crash lands where it was solved.
     line, from_s = drive.line.smoothing()
+    if entry is not None and approach_lanes:  # its body kept in its lane up to the stop line (swing.py)
+        approach = Approach.of(float(np.interp(entry, from_s, line.s)), ((a.shape, a.width) for a in approach_lanes))
+        line, from_s, _ = keep_in_lane(line, from_s, approach, CAR)
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
@@ -110,8 +115,10 @@ def _along(drive: Drive, actions: tuple[Any, ...], indices: range, *, start: flo
 
 def _through_junction(
     drive: Drive, p: Participant, match: SiteMatch, road_map: RoadMap, side: Side, prefer: tuple[ActionKind, str] | None
-) -> float:
-    """Extend the drive's line across the junction; returns the stop line's arc length."""
+) -> tuple[float, tuple[LaneInfo, ...]]:
+    """Extend the drive's line across the junction; returns the stop line's arc length and the
+    lanes of the arm the car may use up to it (none when it does not drive there in its own
+    direction, or turns back)."""
     actions = p.known_actions
     site = match.site
     move_at = next((k for k, a in enumerate(actions) if a.kind in JUNCTION_MOVES), None)
@@ -132,10 +139,12 @@ def _through_junction(
     start = min(start, max(1.0, drive.line.length - 5.0))  # a short city arm: just before the junction
     _along(drive, actions, before, start=start, side=side)
     if drive.left_road:
-        return drive.line.length
+        return drive.line.length, ()
     to = actions[move_at].to if move_at is not None else None
     turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map)
     entry = drive.line.length
+    own = () if drive.against or move is ActionKind.U_TURN else arm.incoming
+    approach = tuple(lane for lane in own if lane.id in drive.lanes)
     exit_line = exit_corridor.own_line(exit_number)
     joins = exit_line.project(turn.point(turn.length))[0]  # a U-turn may join its lane past the start
     if joins > 0.5:
@@ -154,7 +163,7 @@ def _through_junction(
     if move_at is not None:
         drive.stretches[move_at] = (entry, done)
     _along(drive, actions, after, start=done + GAP, side=side)
-    return entry
+    return entry, approach
 
 
 def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
