@@ -196,8 +196,9 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
                 rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
             missing = args.roads - len(results)
             rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
-        report[_map_key(map_path, maps)] = {"rows": rows}
-        print(_srr_table(_map_key(map_path, maps), rows))
+        key = _map_key(map_path, maps)
+        report[key] = {"rows": rows}
+        print(_srr_table(key, rows))
     if args.json:
         write_atomic(args.json, json.dumps(report, indent=2) + "\n")
     return EXIT_OK

@@ -15,6 +15,9 @@ CRASH_ANGLES: dict[str, tuple[float, float]] = {
     "frontal": (100.0, 180.0),
     "side": (0.0, 180.0),
 }
+# m a body may reach over a lane line before it counts as crossing it: the SUMO oracle's bound,
+# which lowering (compiler/lower/swing.py) plans inside.
+LINE_TOLERANCE = 0.25
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ in other words.
 
 from __future__ import annotations
 
+from sovarc.compiler.lower.assume import COMPASS
 from sovarc.dsl.errors import Diagnostic, Severity, UnsatError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Role, Scenario
 from sovarc.targets.verdict import CRASH_ANGLES
@@ -21,7 +22,6 @@ KEEPS_HEADING = frozenset(
     {ActionKind.FOLLOW_LANE, ActionKind.CHANGE_LANE, ActionKind.GO_ACROSS, ActionKind.STOP, ActionKind.RETROGRADE}
 )
 SWERVE = 35.0  # degrees a lane change or a swerve onto the oncoming lane turns a vehicle, at most
-_BEARING = {Heading.NORTH: 0, Heading.EAST: 90, Heading.SOUTH: 180, Heading.WEST: 270}
 
 
 def check_headings(scenario: Scenario) -> None:
@@ -33,8 +33,8 @@ def check_headings(scenario: Scenario) -> None:
         return
     striker, victim = pair
     assert striker is not None and victim is not None
-    apart = abs(_BEARING[striker.heading] - _BEARING[victim.heading]) % 360  # type: ignore[index]
-    apart = min(apart, 360 - apart)
+    quarters = (COMPASS.index(striker.heading) - COMPASS.index(victim.heading)) % 4  # type: ignore[arg-type]
+    apart = 90.0 * min(quarters, 4 - quarters)
     low, high = CRASH_ANGLES[crash.type.value]
     if max(0.0, apart - 2 * SWERVE) <= high and min(180.0, apart + 2 * SWERVE) >= low:
         return

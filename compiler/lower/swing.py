@@ -24,8 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 from sovarc.compiler.lower.polyline import Polyline, unit
 from sovarc.compiler.plan import Body
+from sovarc.targets.verdict import LINE_TOLERANCE  # the SUMO oracle's: corners are moved in by it
 
-LINE_TOLERANCE = 0.25  # m a body may reach over a lane line (the SUMO oracle's: corners are moved in by it)
 MARGIN = 0.15  # m kept in hand, for the synthesized path's small departures from the line
 STEP = 0.25  # m between checked front positions
 AHEAD = (3.0, 4.0, 6.0, 8.0, 10.0, 12.0)  # m before the stop line where a reshaped bend may begin

@@ -34,10 +34,9 @@ from sovarc.dsl.ir import ActionKind, CrashType
 from sovarc.targets.sumo.bodies import Body, Contact, closest_points, first_touch, overlap
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
-from sovarc.targets.verdict import CRASH_ANGLES, Finding, Verdict
+from sovarc.targets.verdict import CRASH_ANGLES, LINE_TOLERANCE, Finding, Verdict
 
 TARGET = "sumo"
-LINE_TOLERANCE = 0.25  # m a body may reach over a lane line before it counts as crossing it
 TRACK_TOLERANCE = 0.10  # m between a replayed position and its sample
 REAR_END_MAX_ANGLE = CRASH_ANGLES["rear_end"][1]
 FRONTAL_MIN_ANGLE = CRASH_ANGLES["frontal"][0]

@@ -22,7 +22,7 @@ from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.compiler.plan import CAR, Plan
 from sovarc.compiler.synth import synthesize
 from sovarc.targets.sumo.bodies import Body
-from sovarc.targets.sumo.oracle import LINE_TOLERANCE
+from sovarc.targets.verdict import LINE_TOLERANCE
 
 from tests.compiler.lower.staging import town
 from tests.conftest import SHARED
