@@ -50,6 +50,7 @@ MIN_LEAD = 6.0  # m a vehicle drives before the crash at the least (LEAD is the 
 AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach speed
 START_TOUCH = 0.5  # m: lines that begin this close begin in one lane
 START_GAP = 1.0  # m between two vehicles that start one behind the other in one lane
+RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 100 000
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
 
@@ -153,29 +154,48 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
     # A fresh context per problem: Z3's choice among models depends on every term its context
     # has seen, so sharing the global one would make a plan depend on what was solved before.
     z = _Terms(z3.Context())
-    solver = z3.Solver(ctx=z.ctx)
-    solver.set("random_seed", 0)
-    solver.set("timeout", 4000)
-    tracked: dict[str, Fact] = {}
+    tracked: list[tuple[str, Any]] = []  # (label, constraint) in the order they were made
 
     def need(label: str, constraint: Any) -> None:
-        fact = problem.facts[label]
-        name = f"{label}#{len(tracked)}"
-        tracked[name] = fact
-        solver.assert_and_track(constraint, z3.Bool(name, z.ctx))
+        tracked.append((label, constraint))
 
     t_hit = z.real("t_hit")
     need("impact", z3.And(t_hit >= 2.0, t_max >= t_hit))
     motions = {pid: _motion(pid, r, problem, need, nice, z) for pid, r in problem.routes.items()}
     _apart_at_start(problem, motions, need)
     _contact(problem, motions, t_hit, need, nice, z)
+    # Plain assertions first: Z3 solves them with its nonlinear arithmetic engine in
+    # milliseconds, where the same problem under tracking literals (assumptions) can take
+    # minutes. The tracked solve runs only to name the facts of an unsat core.
+    solver = _solver(z)
+    solver.add(*(constraint for _, constraint in tracked))
     result = solver.check()
+    if result == z3.sat:
+        return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
     if result == z3.unknown:
         raise ConflictError([problem.facts["impact"]])
-    if result == z3.unsat:
-        core = sorted({tracked[str(b)].label for b in solver.unsat_core()})
-        raise ConflictError([problem.facts[label] for label in core])
-    return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
+    raise ConflictError(_core(z, problem, tracked))
+
+
+def _solver(z: _Terms) -> Any:
+    solver = z3.Solver(ctx=z.ctx)
+    solver.set("random_seed", 0)
+    # A budget of work, not of time, so the answer never depends on the machine's load.
+    solver.set("rlimit", RLIMIT)
+    return solver
+
+
+def _core(z: _Terms, problem: Problem, tracked: list[tuple[str, Any]]) -> list[Fact]:
+    """The facts behind an unsat problem; all of them when the core costs more than the budget."""
+    solver = _solver(z)
+    names: dict[str, str] = {}
+    for i, (label, constraint) in enumerate(tracked):
+        name = f"{label}#{i}"
+        names[name] = label
+        solver.assert_and_track(constraint, z3.Bool(name, z.ctx))
+    if solver.check() != z3.unsat:
+        return [problem.facts[label] for label in sorted({label for label, _ in tracked})]
+    return [problem.facts[label] for label in sorted({names[str(b)] for b in solver.unsat_core()})]
 
 
 def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: _Terms) -> Motion:
