@@ -196,7 +196,7 @@ def _junction_line(
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
     if drive.against:
-        corridor = Corridor.leaving(_arm_for_move(match, arm, move))
+        corridor = Corridor.leaving(_wrong_way_exit(match, arm, move))
         number = min(to if isinstance(to, int) else len(corridor.own), len(corridor.own))
         start = corridor.own_line(number)
         return bezier(end, heading, start.point(0.0), start.heading(0.0)), corridor, number
@@ -233,12 +233,27 @@ def _u_turn(drive: Drive, arm: Arm, to: Any, site: str) -> tuple[Polyline, Corri
     return turn, corridor, number
 
 
-def _arm_for_move(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm:
-    """The arm a manoeuvre leaves by. Slots run clockwise by the heading of ENTERING traffic,
-    so straight ahead leaves by the opposite slot, a left turn by the next slot clockwise."""
-    wanted = arm.slot + {ActionKind.TURN_LEFT: 1, ActionKind.TURN_RIGHT: 3}.get(move, 2)
-    found = match.site.arm_in_slot(wanted)
-    return found if found is not None and found.outgoing else arm
+def _wrong_way_exit(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm:
+    """The arm a car driving the wrong way on `arm` leaves by: where the arm's connections for the
+    move go (the map's own left and right, by which an unnamed move was chosen), else the arm in
+    the move's slot of the compass cross (the two differ where roads meet askew). Never `arm`
+    itself: its outgoing lanes are the ones the car is driving, so no line leads into them."""
+    site = match.site
+    linked = [site.arm_of_lane(c.to_lane) for c in site.connections_from(arm) if c.direction in JUNCTION_MOVES[move]]
+    by_slot = _arm_in_move_slot(match, arm, move)
+    ranked = ([by_slot] if by_slot in linked else []) + linked + [by_slot]
+    found = next((a for a in ranked if a is not None and a.id != arm.id and a.outgoing), None)
+    if found is None:
+        raise LoweringError(
+            Diagnostic(f"on {site.id}, no arm to {move.value} into from arm {arm.id} for a car driving the wrong way")
+        )
+    return found
+
+
+def _arm_in_move_slot(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm | None:
+    """The arm a manoeuvre leaves by on the compass cross. Slots run clockwise by the heading of
+    ENTERING traffic, so straight ahead leaves by the opposite slot, a left turn by the next slot."""
+    return match.site.arm_in_slot(arm.slot + {ActionKind.TURN_LEFT: 1, ActionKind.TURN_RIGHT: 3}.get(move, 2))
 
 
 def _pick_connection(match: SiteMatch, arm: Arm, move: ActionKind, current: LaneInfo, to: Any) -> Connection:

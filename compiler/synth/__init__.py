@@ -26,6 +26,7 @@ from sovarc.dsl.ir import ActionKind, Role
 STEP = 0.1  # s between samples: SUMO's usual step for replays
 AFTER = 1.5  # s the trajectories go on after the impact
 ENVELOPE_SLACK = 1.10  # planned speed may exceed TOPP-RA's by this factor (its grid is coarse)
+CONTEXT = 6.0  # m of path either side of the judged stretch that shape its ends (see limits.py)
 
 
 def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
@@ -105,9 +106,15 @@ def _check_drivable(pid: str, path: Path, s: np.ndarray, v: np.ndarray, lowered:
     unique, first = np.unique(np.round(s, 3), return_index=True)
     fastest = np.maximum.reduceat(v, first)
     planned = np.interp(grid, unique, fastest)
-    points = np.array([path.pose(float(g))[:2] for g in grid])
+    # The path around the driven stretch too (it runs on past the route's end), so that the
+    # stretch's ends bend as the path does where it is cut, often inside a turn after the crash.
+    steps = np.arange(1.0, CONTEXT + 0.5)
+    before = (grid[0] - steps)[::-1]
+    before = before[before >= 0.0]  # the path begins where the route does
+    after = grid[-1] + steps
+    points = np.array([path.pose(float(g))[:2] for g in np.concatenate((before, grid, after))])
     limit = max(float(planned.max()) * 1.05, 1.0)
-    ratio = worst_ratio(points, planned, limit)
+    ratio = worst_ratio(points, planned, limit, first=len(before))
     if ratio > ENVELOPE_SLACK:
         raise SynthesisError(
             Diagnostic(

@@ -1,4 +1,5 @@
-"""A wrong-way swerve crosses a lane line into oncoming lanes that run beside it, never a median."""
+"""A wrong-way swerve crosses a lane line into oncoming lanes that run beside it, never a median;
+at a junction the wrong-way car leaves by the arm its move leads to, never its own."""
 
 from __future__ import annotations
 
@@ -10,9 +11,22 @@ import sumo
 from sovarc.compiler.lower import lower_on
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.lower.corridor import Corridor, Drive
-from sovarc.compiler.maps import LaneInfo, find_sites, load_map, match_site, scenario_needs
+from sovarc.compiler.lower.routes import _junction_line
+from sovarc.compiler.maps import (
+    Arm,
+    Connection,
+    LaneInfo,
+    RoadMap,
+    Site,
+    SiteMatch,
+    find_sites,
+    load_map,
+    match_site,
+    scenario_needs,
+)
 from sovarc.dsl import parse
 from sovarc.dsl.errors import LoweringError
+from sovarc.dsl.ir import ActionKind, RoadKind
 
 CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
 WIDTH = 3.2
@@ -105,3 +119,49 @@ def test_a_swerve_asked_for_at_the_end_of_the_road_has_no_room() -> None:
     drive = _eastbound_with_oncoming(start=0.0, median=0.0)
     with pytest.raises(LoweringError, match="leave no room to move across"):
         drive.retrograde(1, 200.0)
+
+
+def _askew_t(*links: tuple[str, str, str]) -> SiteMatch:
+    """A T with arms from the north (slot 2), the south (slot 0) and the east (slot 3), none from
+    the west, lanes ending 8 m from the centre. `links`: (from arm, to arm, SUMO direction)."""
+
+    def arm(name: str, slot: int, inward: tuple[float, float], right: tuple[float, float]) -> Arm:
+        far, near = np.multiply(inward, -100.0), np.multiply(inward, -8.0)
+        shift = np.multiply(right, WIDTH / 2.0)
+        incoming = _lane(name, (tuple(far + shift), tuple(near + shift)))
+        outgoing = _lane(f"-{name}", (tuple(near - shift), tuple(far - shift)))
+        return Arm(name, 0.0, slot, (incoming,), (outgoing,), 92.0)
+
+    arms = (arm("s", 0, (0.0, 1.0), (1.0, 0.0)), arm("n", 2, (0.0, -1.0), (-1.0, 0.0)))
+    arms += (arm("e", 3, (-1.0, 0.0), (0.0, 1.0)),)
+    connections = tuple(Connection(f"{a}_0", f"-{b}_0", d, None) for a, b, d in links)
+    site = Site("junction:askew", RoadKind.T_JUNCTION, (0.0, 0.0), 0.0, arms, connections)
+    return SiteMatch(site, 0, (), ())
+
+
+def _wrong_way_on_north_arm(match: SiteMatch) -> tuple[Drive, Arm]:
+    """Southbound in the north arm's northbound lane, up to the junction."""
+    arm = match.site.arms[1]
+    corridor = Corridor.entering(arm)
+    return Drive(corridor, corridor.other_line(1), 1, against=True, site=match.site.id), arm
+
+
+def test_a_wrong_way_move_leaves_by_the_arm_its_connection_leads_to() -> None:
+    """SUMO calls the move from the north arm to the south one a right turn where the road bends
+    there; the compass cross has no arm in the right turn's slot (the west). Before, the line
+    was laid into the car's own arm, from the point it stood on to itself, and failed."""
+    match = _askew_t(("n", "s", "r"), ("n", "e", "l"))
+    drive, arm = _wrong_way_on_north_arm(match)
+    road_map: RoadMap = None  # type: ignore[assignment]  # a wrong-way move reads no internal lanes
+    line, corridor, number = _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map)
+    assert corridor.own[0].id == "-s_0" and number == 1
+    assert line.point(0.0) == pytest.approx((WIDTH / 2.0, 8.0))
+    assert line.point(line.length) == pytest.approx((-WIDTH / 2.0, -8.0))  # into the southbound lane
+
+
+def test_a_wrong_way_move_with_no_arm_to_leave_by_is_refused_with_the_reason() -> None:
+    match = _askew_t(("n", "s", "s"), ("n", "e", "l"))
+    drive, arm = _wrong_way_on_north_arm(match)
+    road_map: RoadMap = None  # type: ignore[assignment]
+    with pytest.raises(LoweringError, match="no arm to turn_right into from arm n for a car driving the wrong way"):
+        _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map)
