@@ -4,9 +4,13 @@ Conventions, shared by all targets and oracles:
 - Coordinates are the map file's own (SUMO network coordinates; for an OpenDRIVE map,
   those of the network netconvert made from it, with --offset.disable-normalization).
 - Headings are compass degrees: 0 = north (+y), 90 = east (+x), clockwise. This is
-  SUMO's vehicle angle.
+  SUMO's vehicle angle. A heading is the direction the body FACES: the direction of travel
+  while driving forward, its opposite while reversing (the legs of a three-point turn).
 - A sample's (x, y) is the FRONT-BUMPER CENTRE of a vehicle, as in SUMO, and the body
-  centre of a pedestrian. `body.length` runs back from it along the heading.
+  centre of a pedestrian. `body.length` runs back from it along the heading, whichever way
+  it moves.
+- A sample's speed is signed: negative while reversing. A vehicle stands (speed 0) at every
+  change between forward and reverse.
 - Every trajectory is sampled at the plan's `step` from t = 0; all end at the same time.
 - At `impact.time` the striker and the victim touch at the faces the crash type names;
   the trajectories go on for a short while after it, so that simulators see the overlap.
@@ -42,6 +46,7 @@ class Body:
 
 
 CAR = Body(4.6, 1.8, "passenger")
+REAR_OVERHANG = 0.22  # of a vehicle's length: how far ahead of its rear its rear axle lies (the axle it turns about)
 PEDESTRIAN = Body(0.5, 0.6, "pedestrian")
 
 

@@ -391,7 +391,7 @@ def _facts(scenario: Scenario, routes: dict[str, Route], limit: float, limit_fac
             facts[f"{pid}.action{k}"] = Fact(
                 f"{pid}.action{k}", f"{pid} action {k + 1} ({action.kind.value})", action.meta.span
             )
-        for j in range(len(p.known_actions) + 2):
+        for j in range(len(p.known_actions) + 2 + len(route.rests())):  # a leg per stop, a turn's too
             facts[f"{pid}.curve{j}"] = Fact(
                 f"{pid}.curve{j}", f"the curves of {pid}'s route on this site", p.meta.where("actions")
             )
@@ -403,6 +403,12 @@ def _no_contact(
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
+    turning = " and ".join(r.participant.id for r in (striker, victim) if r.manoeuvres)
+    if turning and contacts(striker, victim, crash, whole=True):
+        how = (
+            f"they meet only while {turning} still turns in legs (a three-point turn), before its last change "
+            "of gear; a crash is planned on its last forward leg or after it, never on a reverse leg"
+        )
     message = (
         f"on {match.site.id}, {striker.participant.id} cannot strike {victim.participant.id} as a {crash.value} "
         f"crash needs: {how}"

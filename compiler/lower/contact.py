@@ -20,11 +20,12 @@ victim's side, before the lines cross (`_face_reaches`).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.maps.geometry import angle_diff, angle_diffs
+from sovarc.compiler.plan import Body
 from sovarc.dsl.ir import CrashType
 from sovarc.targets.verdict import CRASH_ANGLES  # what every oracle calls frontal
 
@@ -47,6 +48,9 @@ FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 # they shared: 15 degrees inside every oracle's bound for a rear-end.
 ALONG = CRASH_ANGLES["rear_end"][1] - 15.0
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
+# A car turning in legs is struck where along its side the striker's path crosses it: as it moves
+# off from its last change of gear its body lies across a lane, its middle often past that path.
+TURNING_SIDE = (0.5, 0.65, 0.8)
 
 
 @dataclass(frozen=True)
@@ -64,10 +68,25 @@ class Contact:
         return self.offset + self.sign * s if self.sign else self.offset
 
 
-def contacts(striker: Route, victim: Route, crash: CrashType) -> list[Contact]:
-    """Every contact the crash type accepts, best first."""
+def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = False) -> list[Contact]:
+    """Every contact the crash type accepts, best first. A participant that turns in legs (a
+    three-point turn) meets the other only after its last change of gear: the crash is on a
+    forward leg and the solver puts it on the last one. `whole`: on the whole lines (to tell why
+    there is no contact)."""
     k = FACE[crash] * victim.body.length
-    found = [c for c in _meetings(striker, victim, k, crash is CrashType.SIDE) if _accepts(crash, c)]
+    side = crash is CrashType.SIDE
+    if whole or not (striker.manoeuvres or victim.manoeuvres):
+        found = _meetings(_View.of_line(striker), _View.of_line(victim), k, side)
+    else:
+        mine = _View.after_turns(striker, 0.0) if striker.manoeuvres else _View.of_line(striker)
+        found = []
+        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[crash],):
+            if victim.manoeuvres:  # the face itself: k is in the view
+                theirs, back = _View.after_turns(victim, face * victim.body.length), 0.0
+            else:
+                theirs, back = _View.of_line(victim), face * victim.body.length
+            found += [_on_routes(c, mine, theirs) for c in _meetings(mine, theirs, back, side)]
+    found = [c for c in found if _accepts(crash, c)]
     preference = {
         CrashType.REAR_END: lambda c: (c.kind != "shared", c.angle, -c.hi),
         CrashType.FRONTAL: lambda c: (c.kind != "shared", -c.angle, c.lo),
@@ -88,10 +107,46 @@ def _accepts(crash: CrashType, c: Contact) -> bool:
     return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)
 
 
-def _meetings(striker: Route, victim: Route, k: float, side: bool = False) -> list[Contact]:
-    a, sa = _samples(striker.line.points, striker.line.s)
-    b, sb = _samples(victim.line.points, victim.line.s)
-    ha, hb = _headings(a), _headings(b)
+@dataclass(frozen=True)
+class _View:
+    """A route as the contact search sees it: points every STEP from its start, the heading the
+    body faces at each, the body; the route's arc length is the view's plus `shift`."""
+
+    points: np.ndarray
+    s: np.ndarray
+    headings: np.ndarray
+    body: Body
+    shift: float = 0.0
+
+    @classmethod
+    def of_line(cls, route: Route) -> _View:
+        """The front bumper's line: the body trails along it."""
+        points, s = _samples(route.line.points, route.line.s)
+        return cls(points, s, _headings(points), route.body)
+
+    @classmethod
+    def after_turns(cls, route: Route, back: float) -> _View:
+        """From the last stop of its three-point turns on: where the point `back` metres behind the
+        front bumper, along the heading, is when the front is at each arc length. On a turn's last
+        leg the body turns about its rear axle, far off the line the front bumper draws behind it,
+        so a face is placed from the heading, as every oracle places the body."""
+        last = route.rests()[-1]
+        s = np.arange(last, route.line.length + 1e-9, STEP)
+        headings = route.facing(s)
+        rad = np.radians(headings)
+        points = route.line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
+        return cls(points, s - last, headings, route.body, last)
+
+
+def _on_routes(c: Contact, striker: _View, victim: _View) -> Contact:
+    """A contact between views as one between the routes."""
+    offset = c.offset + victim.shift - c.sign * striker.shift
+    return replace(c, lo=c.lo + striker.shift, hi=c.hi + striker.shift, offset=offset)
+
+
+def _meetings(striker: _View, victim: _View, k: float, side: bool = False) -> list[Contact]:
+    a, sa, ha = striker.points, striker.s, striker.headings
+    b, sb, hb = victim.points, victim.s, victim.headings
     d = np.hypot(a[:, None, 0] - b[None, :, 0], a[:, None, 1] - b[None, :, 1])
     nearest = d.argmin(axis=1)
     apart = d[np.arange(len(a)), nearest]  # each striker point's distance from the victim's line

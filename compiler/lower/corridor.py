@@ -12,8 +12,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
-from sovarc.compiler.lower.route import change_length
+from sovarc.compiler.lower.route import Manoeuvre, change_length
 from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.maps.sites import MEDIAN_MAX
@@ -77,6 +78,7 @@ class Drive:
     left_road: bool = False
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
     site: str = ""  # the site's id, for errors
+    manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -191,7 +193,8 @@ class Drive:
     def u_turn(self, index: int, at: float, to: int | Side | None) -> float:
         """Turn back on a half circle that keeps the body on the road (see uturn.py), into lane
         `to` of the other direction; without one, into the lane the turn reaches most easily
-        (the one by the centre line, unless the road is too narrow to turn into it)."""
+        (the one by the centre line, unless the road is too narrow to turn into it). A road too
+        narrow for a half circle takes a three-point turn (kturn.py)."""
         band = Band.across(self.corridor.own, self.corridor.other)
         self.lanes.update(lane.id for lane in self.corridor.own + self.corridor.other)  # the whole road
         p0 = self.line.point(at)
@@ -201,7 +204,7 @@ class Drive:
         lines = [self.corridor.other_line(n) if self.against else self.corridor.own_line(n) for n in numbers]
         number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), CAR)
         if not plan.fits:
-            raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}")
+            return self._k_turn(index, at, band, list(zip(numbers, lines, strict=True)))
         if number != numbers[0]:
             self.notes.append(
                 f"action {index + 1}: the road is too narrow to U-turn into lane {numbers[0]}; turns into lane {number}"
@@ -214,6 +217,39 @@ class Drive:
         end = head.length + arc_end
         self.stretches[index] = (at, end)
         return end
+
+    def _k_turn(self, index: int, at: float, band: Band, lanes: list[tuple[int, Polyline]]) -> float:
+        """The U-turn of action `index` at arc length `at` in legs, into the first of `lanes` (number
+        and line, the preferred first) they reach; the legs are recorded as a manoeuvre. It begins
+        halfway along the road at the earliest: stopping and reversing takes some ten seconds more
+        than one sweep, and traffic behind the car then has the road's length to come up."""
+        at = max(at, kturn.ALONG * self.line.length)
+        found = kturn.choose(band, self.line.point(at), lanes, CAR)
+        if found is None:
+            raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}", kturn.MAX_LEGS)
+        number, d_to, plan = found
+        if number != lanes[0][0]:
+            self.notes.append(f"action {index + 1}: a turn in legs cannot end in lane {lanes[0][0]}; ends in {number}")
+        target = self._target(number, self.against)
+        turn = kturn.k_turn_line(band, self.line.point(at), target, d_to, plan)
+        head = self.line.sub(0.0, at)
+        rest = [target.sub(turn.joins, target.length)] if target.length - turn.joins > 0.5 else []
+        self.line = concat([head, turn.line, *rest])
+        self.record_turn(index, turn, head.length, band, plan.count)
+        end = head.length + float(turn.s[-1])
+        self.stretches[index] = (at, end)
+        return end
+
+    def record_turn(self, index: int, turn: kturn.KTurnLine, shift: float, band: Band, legs: int) -> None:
+        """Keep a turn in legs as a manoeuvre of the line (it begins `shift` metres along it), with a note."""
+        stops = tuple(s + shift for s in turn.stops)
+        self.manoeuvres.append(Manoeuvre(index, turn.s + shift, turn.heading, stops, turn.gears))
+        name = {3: "a three-point turn", 5: "a five-point turn"}.get(legs, f"{legs} legs")
+        who = f"action {index + 1}" if index >= 0 else "U-turn"  # one no action names, at a junction
+        self.notes.append(
+            f"{who}: the road is {band.left - band.right:.1f} m wide, too narrow for a U-turn in one "
+            f"sweep: turns in {legs} legs ({name}), forward and reverse"
+        )
 
     def _driveway(self, side: Side, against: bool) -> tuple[float, float]:
         """How far sideways a driveway on `side` lies from the line, and the turn (degrees) towards it.

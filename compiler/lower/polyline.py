@@ -5,6 +5,7 @@ Headings are compass degrees (0 = north, clockwise), as everywhere in sovarc.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable, Sequence
 
@@ -90,6 +91,26 @@ class Polyline:
         if len(line.s) != len(from_s):  # a repeated point was dropped: carry over by proportion
             from_s = line.s * (self.length / line.length)
         return line, from_s
+
+    def smoothing_except(self, keep: Sequence[tuple[float, float]], window: float = 6.0) -> tuple[Polyline, np.ndarray]:
+        """`smoothing`, but the stretches `keep` (arc-length ranges, in order) stay as they are:
+        the legs of a three-point turn are laid out exactly, corners at their stops and all."""
+        if not keep:
+            return self.smoothing(window)
+        cuts = [0.0, *(x for stretch in keep for x in stretch), self.length]
+        points: list[np.ndarray] = []
+        from_s: list[np.ndarray] = []
+        for k, (a, b) in enumerate(itertools.pairwise(cuts)):
+            if b - a < 1e-6:
+                continue
+            part = self.sub(a, b)
+            line, at = part.smoothing(window) if k % 2 == 0 else (part, part.s)
+            first = 1 if points else 0  # each part begins where the one before ends
+            points.append(line.points[first:])
+            from_s.append(at[first:] + a)
+        joined, carried = np.vstack(points), np.concatenate(from_s)
+        keep_mask = np.concatenate(([True], np.hypot(*np.diff(joined, axis=0).T) > 1e-9))
+        return Polyline(joined[keep_mask]), carried[keep_mask]
 
     def project(self, p: Point) -> tuple[float, float]:
         """(arc length of the closest point, distance to it)."""

@@ -8,6 +8,7 @@ the site does not fix (anywhere along a lane) has a range, and the solver picks 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -19,6 +20,8 @@ LATERAL_ACCEL = 2.5  # m/s^2: the most a turn may ask (comfortable; it caps spee
 LEAD = 20.0  # m: the least a participant drives before its first action, so that it is seen moving
 CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change
+MANOEUVRE_SPEED = 2.5  # m/s: the legs of a three-point turn are driven at walking pace
+CAP_REACH = 3.0  # m either side of a leg whose curves cap its speed
 
 
 @dataclass(frozen=True)
@@ -29,10 +32,44 @@ class Event:
     kind: ActionKind
     lo: float  # m along the line where it starts (a stop: the earliest place to stop)
     hi: float  # m where it ends (a stop: the latest place)
+    gear_stop: bool = False  # a stop within a three-point turn (before it, or where it changes gear)
 
     @property
     def label(self) -> str:
         return f"{self.kind.value}" if self.index < 0 else f"action {self.index + 1} ({self.kind.value})"
+
+
+@dataclass(frozen=True, eq=False)
+class Manoeuvre:
+    """A stretch of a route driven in legs that stop between them: a three-point turn (kturn.py).
+    Over it the heading is the way the body faces, not the line's direction; elsewhere it is that."""
+
+    index: int  # the action it performs (its position in the participant's actions)
+    s: np.ndarray  # arc lengths on the route's line of the stretch's points, rising
+    heading: np.ndarray  # compass heading the body faces at each, unwrapped
+    stops: tuple[float, ...]  # where it stands: where the turn begins, then every change of gear
+    gears: tuple[int, ...]  # the leg after each stop: +1 forward, -1 reverse
+
+    @property
+    def lo(self) -> float:
+        return float(self.s[0])
+
+    @property
+    def hi(self) -> float:
+        return float(self.s[-1])
+
+    def carried(self, carry: Callable[[float], float]) -> Manoeuvre:
+        """The same stretch with its arc lengths carried onto another line (a smoothed one)."""
+        s = np.array([carry(float(x)) for x in self.s])
+        return Manoeuvre(self.index, s, self.heading, tuple(carry(x) for x in self.stops), self.gears)
+
+    def facing(self, at: np.ndarray) -> np.ndarray:
+        return np.interp(at, self.s, self.heading) % 360.0
+
+    def gear(self, at: float) -> int:
+        """The gear at arc length `at` (forward before the turn; at a stop, that of the leg it ends)."""
+        k = int(np.searchsorted(np.asarray(self.stops), at, side="left"))  # the stops before it
+        return self.gears[k - 1] if k > 0 else 1
 
 
 @dataclass
@@ -47,22 +84,66 @@ class Route:
     starts_at_rest: bool = False  # its first action is a stop (or it waits in a driveway)
     notes: list[str] = field(default_factory=list)
     caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line
+    manoeuvres: tuple[Manoeuvre, ...] = ()  # its three-point turns, in order
 
     def cap_between(self, a: float, b: float) -> float:
-        """The lowest curvature speed cap over [a, b]."""
+        """The lowest curvature speed cap over [a, b] and CAP_REACH beyond, but not beyond a stop
+        of a three-point turn: a car that stands there is not slowed by the legs on its other side."""
         at, caps = self.speed_caps()
-        inside = (at >= a - 3.0) & (at <= b + 3.0)
+        rests = self.rests()
+        lo = max([a - CAP_REACH, *(r for r in rests if r <= a + 1e-6)])
+        hi = min([b + CAP_REACH, *(r for r in rests if r >= b - 1e-6)])
+        inside = (at >= lo) & (at <= hi)
         return float(caps[inside].min()) if inside.any() else float(np.interp(a, at, caps))
 
     def speed_caps(self) -> tuple[np.ndarray, np.ndarray]:
         """(arc lengths, speed cap at each) along the line (a vehicle's is already smoothed)."""
         if self.caps is None:
-            radii = self.line.curvature_radius(window=8.0)
-            self.caps = np.vstack([self.line.s, np.sqrt(LATERAL_ACCEL * np.minimum(radii, 1e6))])
+            caps = np.sqrt(LATERAL_ACCEL * np.minimum(self._radii(), 1e6))
+            for m in self.manoeuvres:
+                legs = (self.line.s > m.lo + 1e-6) & (self.line.s <= m.hi)
+                caps[legs] = np.minimum(caps[legs], MANOEUVRE_SPEED)
+            self.caps = np.vstack([self.line.s, caps])
         return self.caps[0], self.caps[1]
 
+    def _radii(self) -> np.ndarray:
+        """The line's radius of curvature at each vertex, measured within each stretch between the
+        stops of its three-point turns (a change of gear is a turn back on the spot, no curve)."""
+        rests = self.rests()
+        if not rests:
+            return self.line.curvature_radius(window=8.0)
+        radii = np.zeros(len(self.line.s))  # a vertex shared by two stretches keeps the wider radius
+        for a, b in zip([0.0, *rests], [*rests, self.line.length], strict=True):
+            inside = (self.line.s >= a - 1e-6) & (self.line.s <= b + 1e-6)
+            if b - a < 1e-6 or inside.sum() < 2:
+                continue
+            sub = self.line.sub(a, b)  # its vertices are the line's (stops are vertices)
+            part = np.minimum(sub.curvature_radius(window=8.0), 1e6)
+            if len(part) != inside.sum():
+                part = np.interp(self.line.s[inside] - a, sub.s, part)
+            radii[inside] = np.maximum(radii[inside], part)
+        return np.where(radii > 0.0, radii, 1e6)
+
+    def rests(self) -> list[float]:
+        """Arc lengths where a three-point turn stands: before it and at every change of gear."""
+        return sorted(s for m in self.manoeuvres for s in m.stops)
+
+    def facing(self, at: np.ndarray) -> np.ndarray:
+        """The compass heading the body faces at arc lengths `at`: the line's direction, or over a
+        three-point turn the heading its legs give."""
+        out = self.line.headings(at)
+        for m in self.manoeuvres:
+            inside = (at >= m.lo) & (at <= m.hi)
+            out[inside] = m.facing(at[inside])
+        return out
+
+    def gear(self, at: float) -> int:
+        """+1 driving forward at arc length `at`, -1 reversing."""
+        return next((m.gear(at) for m in self.manoeuvres if m.lo <= at <= m.hi), 1)
+
     def stops(self) -> list[Event]:
-        return [e for e in self.events if e.kind is ActionKind.STOP]
+        """The places it stands, in order along the line: its stop actions and those of its turns."""
+        return sorted((e for e in self.events if e.kind is ActionKind.STOP or e.gear_stop), key=lambda e: e.lo)
 
 
 def change_length(speed: float) -> float:

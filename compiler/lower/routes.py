@@ -14,6 +14,7 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
+from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
@@ -66,7 +67,8 @@ def vehicle_route(
     starts_at_rest = bool(actions) and actions[0].kind is ActionKind.STOP
     # Smoothed once, here: the contact, the curve caps and the synthesized path all measure
     # arc length on the line the car really drives, so the crash lands where it was solved.
-    line, from_s = drive.line.smoothing()
+    # The legs of a three-point turn stay as laid out.
+    line, from_s = drive.line.smoothing_except([(m.lo, m.hi) for m in drive.manoeuvres])
     if entry is not None and approach_lanes:  # its body kept in its lane up to the stop line (swing.py)
         approach = Approach.of(float(np.interp(entry, from_s, line.s)), ((a.shape, a.width) for a in approach_lanes))
         line, from_s, _ = keep_in_lane(line, from_s, approach, CAR)
@@ -75,6 +77,8 @@ def vehicle_route(
         return float(np.interp(x, from_s, line.s))
 
     events = [replace(e, lo=carry(e.lo), hi=carry(e.hi)) for e in events]
+    manoeuvres = tuple(m.carried(carry) for m in drive.manoeuvres)
+    events += [Event(m.index, ActionKind.U_TURN, s, s, gear_stop=True) for m in manoeuvres for s in m.stops]
     drive.lanes.update(lanes_touched(line, match))
     return Route(
         participant=p,
@@ -86,6 +90,7 @@ def vehicle_route(
         start_hi=carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0,
         starts_at_rest=starts_at_rest or drive.start_off_road,
         notes=[f"{p.id} {n}" for n in drive.notes],
+        manoeuvres=manoeuvres,
     )
 
 
@@ -141,7 +146,8 @@ def _through_junction(
     if drive.left_road:
         return drive.line.length, ()
     to = actions[move_at].to if move_at is not None else None
-    turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map)
+    index = move_at if move_at is not None else -1
+    turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map, index)
     entry = drive.line.length
     own = () if drive.against or move is ActionKind.U_TURN else arm.incoming
     approach = tuple(lane for lane in own if lane.id in drive.lanes)
@@ -174,9 +180,10 @@ def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
 
 
 def _junction_line(
-    drive: Drive, arm: Arm, move: ActionKind, to: Any, match: SiteMatch, road_map: RoadMap
+    drive: Drive, arm: Arm, move: ActionKind, to: Any, match: SiteMatch, road_map: RoadMap, index: int
 ) -> tuple[Polyline, Corridor, int]:
-    """The line across the junction, the corridor it leaves on and the lane number it enters."""
+    """The line across the junction, the corridor it leaves on and the lane number it enters
+    (`index`: the move's action; -1 when the actions name none)."""
     if not drive.against and move is not ActionKind.U_TURN:
         current = drive.corridor.own[drive.lane - 1]
         connection = _pick_connection(match, arm, move, current, to)
@@ -192,7 +199,7 @@ def _junction_line(
                 why = "the arm is too short to change lanes"
                 drive.notes.append(f"starts in lane {number}, the lane its {move.value} leaves from: {why}")
     if move is ActionKind.U_TURN:
-        return _u_turn(drive, arm, to, match.site.id)
+        return _u_turn(drive, arm, to, match.site.id, index)
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
     if drive.against:
@@ -213,18 +220,28 @@ def _junction_line(
     return turn, corridor, target.number
 
 
-def _u_turn(drive: Drive, arm: Arm, to: Any, site: str) -> tuple[Polyline, Corridor, int]:
+def _u_turn(drive: Drive, arm: Arm, to: Any, site: str, index: int) -> tuple[Polyline, Corridor, int]:
     """A U-turn at the junction back onto the arm's outgoing lanes (see uturn.py): its half circle
     begins at the stop line, and any move across before it ends there (the line is cut back to
-    where it begins). Every lane of the arm's road is the U-turn's to use."""
+    where it begins). Every lane of the arm's road is the U-turn's to use. Where no half circle
+    fits, the car turns in legs (kturn.py) on the arm's road, the front no further than the stop line."""
     band = Band.across(arm.incoming, arm.outgoing)
     corridor = Corridor.leaving(arm)
     count = len(corridor.own)
     numbers = [min(max(to, 1), count)] if isinstance(to, int) else [count, *range(1, count)]
     end = drive.line.point(drive.line.length)
-    number, d_to, plan = choose(band, end, [(n, corridor.own_line(n)) for n in numbers], CAR)
+    lanes = [(n, corridor.own_line(n)) for n in numbers]
+    number, d_to, plan = choose(band, end, lanes, CAR)
     if not plan.fits:
-        raise too_narrow(band, f"on {site}, the U-turn from {arm.id}")
+        found = kturn.choose(band, end, lanes, CAR)
+        if found is None:
+            raise too_narrow(band, f"on {site}, the U-turn from {arm.id}", kturn.MAX_LEGS)
+        number, d_to, legs = found
+        drive.line = drive.line.sub(0.0, max(1.0, drive.line.length - legs.before - legs.reach))
+        turn = kturn.k_turn_line(band, drive.line.point(drive.line.length), corridor.own_line(number), d_to, legs)
+        drive.record_turn(index, turn, drive.line.length, band, legs.count)
+        drive.lanes.update(lane.id for lane in arm.incoming + arm.outgoing)
+        return turn.line, corridor, number
     at = drive.line.length - plan.before
     if at > 1.0:
         drive.line = drive.line.sub(0.0, at)

@@ -1,7 +1,9 @@
 """The constraint problem of one scenario on one site, solved with Z3.
 
 Every participant drives its route in legs: a leg starts moving or from rest, cruises at
-one speed, and ends at a stop or runs on. Unknowns: where each participant starts, where
+one speed, and ends at a stop or runs on. The stops of a three-point turn (before it and at
+each change of gear) are stops like any other, at fixed places; the crash is on the last leg,
+so after a turn's last change of gear (contact.py keeps to that stretch). Unknowns: where each participant starts, where
 it stops (when the site leaves that open), each leg's speed and duration, each stop's
 dwell, where on the contact the crash happens, and the impact time t_hit. The constraints are
 the paper's groups:
@@ -214,7 +216,7 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
     positions = []
     for k, stop in enumerate(stops):
         q = z.real(f"{pid}.stop{k}")
-        label = f"{pid}.action{stop.index}"
+        label = f"{pid}.action{stop.index}" if stop.index >= 0 else f"{pid}.route"  # a turn no action names
         if final_stop and k == len(stops) - 1:
             need(label, z3.And(q >= 0.0, q <= route.line.length))
         else:
@@ -232,8 +234,9 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
         return motion
     begin: Any = z.val(0)
     if route.starts_at_rest:
-        start = positions.pop(0) if positions and stops[0].index == 0 else z.val(0.0)
-        if stops and stops[0].index == 0:
+        initial = bool(stops) and stops[0].index == 0 and not stops[0].gear_stop  # its first action stops it
+        start = positions.pop(0) if initial else z.val(0.0)
+        if initial:
             stops = stops[1:]
         dwell = z.real(f"{pid}.dwell0")
         need(f"{pid}.route", dwell >= (NICE_DWELL if nice else DWELL))

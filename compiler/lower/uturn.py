@@ -13,9 +13,9 @@ direction the car comes from, d to the left of it. The car moves over from its l
 and ends in its lane: R is chosen so that d1 is that lane when the road lets it, else it is
 MIN_RADIUS or the widest the road holds, and a move across after the half circle reaches
 the lane. A move across swings the trailing rear the other way, so each is long enough to
-keep it on the road. A road narrower than the tightest turn needs a three-point turn,
-which plans do not carry (they drive forward only): the layout says it does not fit, and
-the caller reports the site unsatisfiable (`too_narrow`).
+keep it on the road. On a road narrower than the tightest turn the layout says it does not
+fit: on a straight road the caller turns in legs instead (kturn.py), at a junction it reports
+the site unsatisfiable (`too_narrow`).
 """
 
 from __future__ import annotations
@@ -68,6 +68,11 @@ class Band:
         q, f, n = self._axes(inside)
         extra = s - inside
         return (q[0] + extra * f[0] + d * n[0], q[1] + extra * f[1] + d * n[1])
+
+    def heading(self, s: float) -> float:
+        """The compass heading of the band's direction at arc length s (clamped to the base)."""
+        _, f, _ = self._axes(min(max(s, 0.0), self.base.length))
+        return math.degrees(math.atan2(f[0], f[1])) % 360.0
 
     def place(self, p: Point) -> tuple[float, float]:
         """(s, d) of a point."""
@@ -124,8 +129,8 @@ def layout(band: Band, d_from: float, d_to: float, body: Body) -> Layout:
     d1 = d0 + 2.0 * radius
     half = body.width / 2.0
     # a move across swings the rear the other way: towards the right edge before, the left after
-    before = _move_length(d0 - d_from, d_from - half - band.right - MARGIN, body)
-    after = _move_length(d1 - d_to, band.left - MARGIN - half - d1, body)
+    before = move_length(d0 - d_from, d_from - half - band.right - MARGIN, body)
+    after = move_length(d1 - d_to, band.left - MARGIN - half - d1, body)
     fits = before is not None and after is not None
     return Layout(radius, d0, d1, fits, before or 0.0, after or 0.0)
 
@@ -141,7 +146,7 @@ def _widest(band: Band, body: Body) -> float | None:
     return lo
 
 
-def _move_length(gap: float, room: float, body: Body) -> float | None:
+def move_length(gap: float, room: float, body: Body) -> float | None:
     """The length of road for a move across of `gap` metres (0: none) whose rear swing stays
     within `room` (None: no move up to MAX_SHIFT long does)."""
     if abs(gap) < 0.05:
@@ -179,14 +184,12 @@ def choose(band: Band, start: Point, lanes: Sequence[tuple[int, Polyline]], body
     return number, d_to, plan
 
 
-def too_narrow(band: Band, action: str) -> UnsatError:
-    """The site cannot hold the U-turn: unsatisfiable, so that its other rotations are tried."""
-    return UnsatError(
-        Diagnostic(
-            f"{action}: the road is {band.left - band.right:.1f} m wide, too narrow for a U-turn in one sweep "
-            "(it needs a three-point turn, and plans drive forward only)"
-        )
-    )
+def too_narrow(band: Band, action: str, legs: int = 0) -> UnsatError:
+    """The site cannot hold the U-turn: unsatisfiable, so that its other rotations are tried.
+    `legs`: the most legs a turn was tried in (0: one sweep only, as at a junction)."""
+    how = f"even in {legs} legs, forward and reverse" if legs else "in one sweep (a turn in legs is not planned here)"
+    width = band.left - band.right
+    return UnsatError(Diagnostic(f"{action}: the road is {width:.1f} m wide, too narrow for a U-turn {how}"))
 
 
 def _fits(band: Band, radius: float, body: Body) -> bool:
@@ -199,12 +202,12 @@ def u_turn_line(band: Band, start: Point, target: Polyline, d_to: float, plan: L
     band): the move across, the half circle, the move to the lane. Also the arc length within
     the turn where the half circle ends, and the one on `target` where the turn joins it."""
     s_a, d_a = band.place(start)
-    before = _move(s_a, d_a, plan.d0, plan.before, forward=True)
+    before = move_across(s_a, d_a, plan.d0, plan.before, forward=True)
     centre, d0 = (before[-1][0], plan.d0) if before else (s_a, d_a)
     theta = np.linspace(0.0, math.pi, 25)
     middle = (centre + plan.radius * np.sin(theta), d0 + plan.radius * (1.0 - np.cos(theta)))
     arc = [band.at(float(s), float(d)) for s, d in zip(*middle, strict=True)]
-    after = _move(centre, d0 + 2.0 * plan.radius, d_to, plan.after, forward=False)
+    after = move_across(centre, d0 + 2.0 * plan.radius, d_to, plan.after, forward=False)
     head = [band.at(s, d) for s, d in before[1:-1]]
     turn = Polyline([start, *head, *arc[0 if before else 1 :]])
     arc_end = turn.length
@@ -214,7 +217,7 @@ def u_turn_line(band: Band, start: Point, target: Polyline, d_to: float, plan: L
     return Polyline(np.vstack([turn.points[:-1] if not tail else turn.points, np.asarray(ends)])), arc_end, s_t
 
 
-def _move(s: float, d_from: float, d_to: float, length: float, *, forward: bool) -> list[tuple[float, float]]:
+def move_across(s: float, d_from: float, d_to: float, length: float, *, forward: bool) -> list[tuple[float, float]]:
     """(s, d) points of a smooth move across from d_from to d_to over `length` metres of road,
     going forward or back along the band from s (empty for no move)."""
     if length == 0.0:

@@ -2,10 +2,12 @@
 
 plan = synthesize(lowered, step=0.1, seed=0)
 
-Each participant's route becomes a Dubins path (paths.py), its solved schedule a
-jerk-limited arc-length profile (timing.py), and sampling both at the plan's step gives
-(t, x, y, heading, speed). TOPP-RA then checks that every vehicle's profile stays under
-the fastest drivable speed along its path (limits.py); a profile over it is an error.
+Each participant's route becomes a Dubins path (paths.py; the legs of a three-point turn are
+driven as lowering laid them out, legs.py), its solved schedule a jerk-limited arc-length
+profile (timing.py), and sampling both at the plan's step gives (t, x, y, heading, speed):
+the heading the body faces, the speed negative on a reverse leg. TOPP-RA then checks that every
+vehicle's profile stays under the fastest drivable speed along its path (limits.py), leg by
+leg; a profile over it is an error.
 """
 
 from __future__ import annotations
@@ -17,8 +19,8 @@ from sovarc.compiler.lower import Lowered
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.solve import AFTER_CRASH
 from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.synth.legs import RoutePath
 from sovarc.compiler.synth.limits import worst_ratio
-from sovarc.compiler.synth.paths import Path, plan_path
 from sovarc.compiler.synth.timing import knots, sample
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 from sovarc.dsl.ir import ActionKind, Role
@@ -64,9 +66,9 @@ def _trajectory(
     solution = lowered.solution
     notes = []
     vehicle = route.participant.role is Role.VEHICLE
-    path, chords = plan_path(route.line, vehicle=vehicle)
-    if chords > 2:
-        notes.append(f"{pid}: {chords} pieces of path tighter than a car turns; planned along the lane line")
+    path = RoutePath(route, vehicle=vehicle)
+    if path.chords > 2:
+        notes.append(f"{pid}: {path.chords} pieces of path tighter than a car turns; planned along the lane line")
     legs = solution.legs.get(pid, ())
     start = solution.starts[pid]
     profile = knots(legs, start, solution.initial_dwell.get(pid, 0.0), end_time)
@@ -76,7 +78,7 @@ def _trajectory(
     samples = []
     for t, si, vi in zip(times, s, v, strict=True):
         x, y, heading, scale = path.pose(float(si))
-        samples.append(Sample(float(t), x, y, heading, float(vi) * scale))
+        samples.append(Sample(float(t), x, y, heading, float(vi) * scale * path.gear(float(si))))
     if vehicle:
         _check_drivable(pid, path, s, v, lowered)
     return (
@@ -94,27 +96,35 @@ def _trajectory(
     )
 
 
-def _check_drivable(pid: str, path: Path, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
-    """TOPP-RA's envelope on the path, every metre of the driven stretch, over the planned speeds."""
+def _check_drivable(pid: str, path: RoutePath, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
+    """TOPP-RA's envelope on the path, every metre of the driven stretch, over the planned speeds;
+    leg by leg where a three-point turn stops (its path turns back on the spot there)."""
     upto = lowered.solution.impact.get(pid)
     if upto is not None:  # what it would drive after the crash is not driven: not judged
         keep = s <= upto + AFTER_CRASH
         s, v = s[keep], v[keep]
     if len(s) < 2 or s[-1] - s[0] < 2.0:
         return  # it (almost) never moves
-    grid = np.arange(s[0], s[-1], 1.0)
     unique, first = np.unique(np.round(s, 3), return_index=True)
     fastest = np.maximum.reduceat(v, first)
-    planned = np.interp(grid, unique, fastest)
-    # The path around the driven stretch too (it runs on past the route's end), so that the
-    # stretch's ends bend as the path does where it is cut, often inside a turn after the crash.
-    steps = np.arange(1.0, CONTEXT + 0.5)
-    before = (grid[0] - steps)[::-1]
-    before = before[before >= 0.0]  # the path begins where the route does
-    after = grid[-1] + steps
-    points = np.array([path.pose(float(g))[:2] for g in np.concatenate((before, grid, after))])
-    limit = max(float(planned.max()) * 1.05, 1.0)
-    ratio = worst_ratio(points, planned, limit, first=len(before))
+    ratio = 0.0
+    turns = bool(path.route.manoeuvres)
+    for lo, hi in path.legs(float(s[0]), float(s[-1])):
+        # a leg of a turn is judged up to its stop, where it stands
+        grid = np.append(np.arange(lo, hi, 1.0), hi) if turns else np.arange(lo, hi, 1.0)
+        if len(grid) < 2 or hi - lo < 2.0:
+            continue
+        planned = np.interp(grid, unique, fastest)
+        # The path around a stretch too (it runs on past the route's end), so that the stretch's
+        # ends bend as the path does where it is cut, often inside a turn after the crash; not
+        # around a leg of a turn in legs, whose path turns back on the spot where it stands.
+        steps = np.zeros(0) if turns else np.arange(1.0, CONTEXT + 0.5)
+        before = (grid[0] - steps)[::-1]
+        before = before[before >= 0.0]  # the path begins where the route does
+        after = grid[-1] + steps
+        points = np.array([path.pose(float(g))[:2] for g in np.concatenate((before, grid, after))])
+        limit = max(float(planned.max()) * 1.05, 1.0)
+        ratio = max(ratio, worst_ratio(points, planned, limit, first=len(before)))
     if ratio > ENVELOPE_SLACK:
         raise SynthesisError(
             Diagnostic(
@@ -135,6 +145,8 @@ def _segments(route: Route, profile_times: tuple[np.ndarray, np.ndarray], legs: 
     speed = max((leg.v for leg in legs), default=0.0)
     out = []
     for event in route.events:
+        if event.gear_stop:
+            continue  # within the U-turn's own segment
         label = f"{event.index + 1}:{event.kind.value}"
         cruise = 0.0 if event.kind is ActionKind.STOP else speed
         out.append(Segment(label, event.lo, event.hi, time_at(event.lo), time_at(event.hi), cruise))

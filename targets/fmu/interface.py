@@ -75,7 +75,7 @@ OBJECT_FIELDS: tuple[tuple[str, str, str], ...] = (
     ("x", "m", "body centre, ego frame forward"),
     ("y", "m", "body centre, ego frame left"),
     ("heading", "deg", "heading relative to the ego's, positive to the left"),
-    ("speed", "m/s", "speed along its own heading"),
+    ("speed", "m/s", "speed along its own heading (negative while it reverses)"),
     ("length", "m", "body length"),
     ("width", "m", "body width"),
 )

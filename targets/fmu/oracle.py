@@ -219,7 +219,7 @@ class _Ttc:
             self.driven[name] = np.full(len(ego.speed), np.inf)
             self.standing[name] = np.full(len(ego.speed), np.inf)
             # only steps where the two could meet within the horizon are worth predicting
-            reach = (ego.speed[steps] + track.speed[steps]) * TTC_HORIZON + ego.body.length + track.body.length
+            reach = (ego.speed[steps] + np.abs(track.speed[steps])) * TTC_HORIZON + ego.body.length + track.body.length
             near = np.hypot(track.x[steps] - ego.x[steps], track.y[steps] - ego.y[steps]) <= reach
             if not near.any():
                 continue

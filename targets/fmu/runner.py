@@ -1,7 +1,8 @@
 """Test generation and running: every vehicle of a plan takes its turn as the ego.
 
 `run_tests(plan)` makes one test per vehicle participant (a pedestrian is never the ego: the ego is a
-driving system) and judges each. With `method="random"` the NPCs of each test are replaced by random
+driving system; nor is a vehicle whose plan reverses, in a three-point turn: the ego interface drives
+forward only, INTERFACE.md) and judges each. With `method="random"` the NPCs of each test are replaced by random
 but plausible ones on the same site (the paper's "Random" baseline; see baseline.py).
 """
 
@@ -36,8 +37,12 @@ class TestResult:
 
 
 def egos(plan: Plan) -> list[str]:
-    """The participants that take a turn as the ego: the vehicles, in plan order."""
-    return [t.participant for t in plan.trajectories if t.body.vclass != "pedestrian"]
+    """The participants that take a turn as the ego: the vehicles that never reverse, in plan order."""
+    return [
+        t.participant
+        for t in plan.trajectories
+        if t.body.vclass != "pedestrian" and all(s.speed >= 0.0 for s in t.samples)
+    ]
 
 
 def run_tests(

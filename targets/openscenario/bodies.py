@@ -14,12 +14,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from sovarc.compiler.plan import Body, Sample
+from sovarc.compiler.plan import REAR_OVERHANG, Body, Sample
 
 TAU = 2.0 * math.pi
 
-# Overhangs as fractions of the length: a 4.6 m car gets a 2.67 m wheelbase, 1.01 m behind the rear axle.
-REAR_OVERHANG = 0.22
+# Overhangs as fractions of the length: a 4.6 m car gets a 2.67 m wheelbase, 1.01 m behind the rear axle
+# (the rear one is the plan's: a three-point turn is laid out about that axle).
 FRONT_OVERHANG = 0.2
 
 # SUMO vehicle class -> OpenSCENARIO vehicleCategory, height (m), mass (kg).

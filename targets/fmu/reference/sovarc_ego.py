@@ -135,7 +135,7 @@ class SovarcEgo(Fmi2Slave):
             rad = math.radians(o["heading"])
             vx, vy = o["speed"] * math.cos(rad), o["speed"] * math.sin(rad)
             reach = own + o["width"] / 2.0 + MARGIN + (self.ego_length + o["length"]) / 4.0
-            if math.hypot(o["x"], o["y"]) > reach + (v + o["speed"]) * HORIZON + half:
+            if math.hypot(o["x"], o["y"]) > reach + (v + abs(o["speed"])) * HORIZON + half:  # a reversing one too
                 continue
             tick = 0.0
             while tick <= min(HORIZON, best):

@@ -49,7 +49,6 @@ KNOWN_GAPS = frozenset(
     {
         "intersection_dual_left_turn_side",
         "straight_median_u_turn_wrong_way_frontal",
-        "t_junction_u_turn_side",
     }
 )
 

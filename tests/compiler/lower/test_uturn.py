@@ -61,12 +61,12 @@ def test_a_wide_road_turns_straight_into_the_lane() -> None:
     assert 0.0 < plan.d0 < 0.5 and plan.radius > 8.5  # moved over a little: the rear swings out
 
 
-def test_a_road_too_narrow_for_one_sweep_is_unsatisfiable() -> None:
-    corridor = _road(1, 2.8)
+def test_a_road_too_narrow_even_for_a_turn_in_legs_is_unsatisfiable() -> None:
+    corridor = _road(1, 2.6)  # 5.2 m: one sweep needs 11.6 m, five legs 5.6 m (test_kturn.py)
     band = Band.across(corridor.own, corridor.other)
-    assert not layout(band, 0.0, 2.8, CAR).fits
+    assert not layout(band, 0.0, 2.6, CAR).fits
     drive = Drive(corridor, corridor.own_line(1), 1, site="road:test")
-    with pytest.raises(UnsatError, match=r"road:test.*5\.6 m wide, too narrow for a U-turn"):
+    with pytest.raises(UnsatError, match=r"road:test.*5\.2 m wide, too narrow for a U-turn even in 5 legs"):
         drive.u_turn(1, 60.0, None)
 
 

@@ -153,7 +153,7 @@ def test_a_wrong_way_move_leaves_by_the_arm_its_connection_leads_to() -> None:
     match = _askew_t(("n", "s", "r"), ("n", "e", "l"))
     drive, arm = _wrong_way_on_north_arm(match)
     road_map: RoadMap = None  # type: ignore[assignment]  # a wrong-way move reads no internal lanes
-    line, corridor, number = _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map)
+    line, corridor, number = _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map, -1)
     assert corridor.own[0].id == "-s_0" and number == 1
     assert line.point(0.0) == pytest.approx((WIDTH / 2.0, 8.0))
     assert line.point(line.length) == pytest.approx((-WIDTH / 2.0, -8.0))  # into the southbound lane
@@ -164,4 +164,4 @@ def test_a_wrong_way_move_with_no_arm_to_leave_by_is_refused_with_the_reason() -
     drive, arm = _wrong_way_on_north_arm(match)
     road_map: RoadMap = None  # type: ignore[assignment]
     with pytest.raises(LoweringError, match="no arm to turn_right into from arm n for a car driving the wrong way"):
-        _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map)
+        _junction_line(drive, arm, ActionKind.TURN_RIGHT, None, match, road_map, -1)
