@@ -53,6 +53,12 @@ AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach spee
 START_TOUCH = 0.5  # m: lines that begin this close begin in one lane
 START_GAP = 1.0  # m between two vehicles that start one behind the other in one lane
 RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 100 000
+# Time limits, for the searches the work budget does not stop (nonlinear steps count little).
+# Tracked solves take under 0.15 s but for a few that take 0.4 s or run to minutes; those go to
+# the plain engine, which takes about 10 ms. A limit between the two keeps the answer the same
+# under load up to a factor of about 2.5.
+TRACKED_MS = 1000
+PLAIN_MS = 3000
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
 
@@ -166,38 +172,38 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
     motions = {pid: _motion(pid, r, problem, need, nice, z) for pid, r in problem.routes.items()}
     _apart_at_start(problem, motions, need)
     _contact(problem, motions, t_hit, need, nice, z)
-    # Plain assertions first: Z3 solves them with its nonlinear arithmetic engine in
-    # milliseconds, where the same problem under tracking literals (assumptions) can take
-    # minutes. The tracked solve runs only to name the facts of an unsat core.
-    solver = _solver(z)
-    solver.add(*(constraint for _, constraint in tracked))
-    result = solver.check()
-    if result == z3.sat:
-        return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
-    if result == z3.unknown:
-        raise ConflictError([problem.facts["impact"]])
-    raise ConflictError(_core(z, problem, tracked))
-
-
-def _solver(z: _Terms) -> Any:
-    solver = z3.Solver(ctx=z.ctx)
-    solver.set("random_seed", 0)
-    # A budget of work, not of time, so the answer never depends on the machine's load.
-    solver.set("rlimit", RLIMIT)
-    return solver
-
-
-def _core(z: _Terms, problem: Problem, tracked: list[tuple[str, Any]]) -> list[Fact]:
-    """The facts behind an unsat problem; all of them when the core costs more than the budget."""
-    solver = _solver(z)
+    # Tracked assertions first, which name the facts of an unsat core. Under tracking literals
+    # Z3 leaves its nonlinear engine, which is quick on most problems and lost on a few (a
+    # crossing on a city cluster junction: 38 s); the plain assertions, solved by that engine in
+    # milliseconds, take over there. The plain engine is itself lost proving some problems unsat
+    # (turns in legs), which the tracked solve settles at once: neither can go alone.
+    solver = _solver(z, TRACKED_MS)
     names: dict[str, str] = {}
     for i, (label, constraint) in enumerate(tracked):
-        name = f"{label}#{i}"
-        names[name] = label
-        solver.assert_and_track(constraint, z3.Bool(name, z.ctx))
-    if solver.check() != z3.unsat:
-        return [problem.facts[label] for label in sorted({label for label, _ in tracked})]
-    return [problem.facts[label] for label in sorted({names[str(b)] for b in solver.unsat_core()})]
+        names[f"{label}#{i}"] = label
+        solver.assert_and_track(constraint, z3.Bool(f"{label}#{i}", z.ctx))
+    result = solver.check()
+    if result == z3.unsat:
+        raise ConflictError([problem.facts[label] for label in sorted({names[str(b)] for b in solver.unsat_core()})])
+    if result == z3.unknown:
+        solver = _solver(z, PLAIN_MS)
+        solver.add(*(constraint for _, constraint in tracked))
+        result = solver.check()
+    if result == z3.sat:
+        return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
+    if result == z3.unsat:  # proved by the plain engine alone: every fact is named
+        raise ConflictError([problem.facts[label] for label in sorted({label for label, _ in tracked})])
+    raise ConflictError([problem.facts["impact"]])
+
+
+def _solver(z: _Terms, timeout_ms: int) -> Any:
+    solver = z3.Solver(ctx=z.ctx)
+    solver.set("random_seed", 0)
+    # A budget of work, which does not depend on the machine's load, and a clock for the
+    # nonlinear searches it does not stop.
+    solver.set("rlimit", RLIMIT)
+    solver.set("timeout", timeout_ms)
+    return solver
 
 
 def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: _Terms) -> Motion:
