@@ -66,12 +66,12 @@ def plans_for(
 
 def plan_site(staged: Scenario, notes: list[str], road_map: RoadMap, match: SiteMatch, seed: int = 0) -> SiteResult:
     """Lower and synthesize the staged scenario on one site; a failure is kept as the result's error."""
-    from sovarc.compiler.lower import lower_on
-    from sovarc.compiler.synth import synthesize
+    from sovarc.compiler.lower import stagings_on
+    from sovarc.compiler.synth import synthesize_first
 
     result = SiteResult(match.site.id)
     try:
-        result.plan = synthesize(lower_on(staged, match, road_map, notes), seed=seed)
+        result.plan = synthesize_first(stagings_on(staged, match, road_map, notes), seed=seed)
     except SovarcError as exc:
         result.error = exc
     except Exception as exc:  # a defect met on this site's geometry: said, and the next site is tried

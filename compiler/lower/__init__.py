@@ -1,6 +1,7 @@
 """Constraint lowering: a scenario on one site of a map, solved with Z3 (the paper's Groups 1-5).
 
 lowered = lower(scenario, road_map, roads=3, seed=0)   # one Lowered per chosen site
+stagings_on(staged, match, road_map, notes)            # one site's solvable stagings, best first
 
 Steps: fill unknown facts with noted choices (assume.py), pick sites (maps.match_sites),
 build each participant's route on the site (routes.py, pedestrian.py), find where striker
@@ -64,17 +65,29 @@ def sites_for(
 
 
 def lower_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: list[str]) -> Lowered:
+    return next(stagings_on(scenario, match, road_map, notes))
+
+
+def stagings_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: list[str]) -> Iterator[Lowered]:
+    """Every staging of the scenario on the site that Z3 can solve, best first, made only when asked
+    for: the chosen rotation's stagings, each with its contacts in turn, then the other rotations'.
+    Synthesis takes the next when it refuses one (its bodies would not first touch as the crash
+    type needs). None at all raises the first UnsatError met."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     limit, limit_fact = _limit(scenario, notes := list(notes))
     first: UnsatError | None = None
+    found = False
     for rotated in _rotations(scenario, match):
-        try:
-            return _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match)
-        except UnsatError as error:
-            first = first or error
-    assert first is not None
-    raise first
+        for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match):
+            if isinstance(item, UnsatError):
+                first = first or item
+            else:
+                found = True
+                yield item
+    if not found:
+        assert first is not None
+        raise first
 
 
 def _rotations(scenario: Scenario, match: SiteMatch) -> Iterator[SiteMatch]:
@@ -94,7 +107,8 @@ def _lower_rotated(
     limit: float,
     limit_fact: Fact,
     chosen: SiteMatch,
-) -> Lowered:
+) -> Iterator[Lowered | UnsatError]:
+    """The solved stagings on one rotation of the site, in order, with the reason each one that fails does."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     notes = notes + list(match.clamped)
@@ -103,37 +117,33 @@ def _lower_rotated(
             f"staged with the report's compass turned {match.rotation} degrees, not {chosen.rotation}: "
             "the crash cannot happen as first placed on this site"
         )
-    first: UnsatError | None = None
     for variant, prefer, why in _stagings(scenario, crash.type, crash.striker, crash.victim):
         routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer)
         striker, victim = routes[crash.striker], routes[crash.victim]
         found = contacts(striker, victim, crash.type)
         if not found:
-            first = first or UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
-            continue
-        try:
-            contact, solution = _schedule(scenario, routes, found, limit, limit_fact)
-        except ConflictError as failure:
-            first = first or UnsatError(_conflict(scenario, match, failure.facts))
+            yield UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
             continue
         extra = [why] if why else []
         extra += [n for route in routes.values() for n in route.notes]
-        if solution.relaxed:
-            extra.append("no natural-looking timing fits: speeds or waits are at the edge of what the facts allow")
-        return Lowered(
-            scenario,
-            match,
-            road_map,
-            routes,
-            contact,
-            solution,
-            crash.type,
-            crash.striker,
-            crash.victim,
-            tuple(notes + extra),
-        )
-    assert first is not None
-    raise first
+        for item in _schedules(scenario, routes, found, limit, limit_fact):
+            if isinstance(item, ConflictError):
+                yield UnsatError(_conflict(scenario, match, item.facts))
+                continue
+            contact, solution = item
+            relaxed = ["no natural-looking timing fits: speeds or waits are at the edge of what the facts allow"]
+            yield Lowered(
+                scenario,
+                match,
+                road_map,
+                routes,
+                contact,
+                solution,
+                crash.type,
+                crash.striker,
+                crash.victim,
+                tuple(notes + extra + (relaxed if solution.relaxed else [])),
+            )
 
 
 Staging = tuple[Scenario, dict[str, tuple[ActionKind, str]], str | None]
@@ -178,13 +188,12 @@ def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: 
     return out
 
 
-def _schedule(
+def _schedules(
     scenario: Scenario, routes: dict[str, Route], found: list[Contact], limit: float, limit_fact: Fact
-) -> tuple[Contact, Solution]:
-    """The first of the best contacts whose constraints Z3 can satisfy, with their solution."""
+) -> Iterator[tuple[Contact, Solution] | ConflictError]:
+    """For each of the best contacts in turn, the solution of its constraints, or Z3's conflict."""
     crash = scenario.crash
     facts = _facts(scenario, routes, limit, limit_fact)
-    first_failure: ConflictError | None = None
     for contact in found[:MAX_CONTACTS]:
         problem = Problem(
             routes=routes,
@@ -198,11 +207,9 @@ def _schedule(
             stationary=_stationary(scenario, str(crash.striker)),
         )
         try:
-            return contact, solve(problem)
+            yield contact, solve(problem)
         except ConflictError as failure:
-            first_failure = first_failure or failure
-    assert first_failure is not None
-    raise first_failure
+            yield failure
 
 
 def _without_turn_lanes(scenario: Scenario, ids: tuple[str, ...]) -> Scenario:

@@ -41,8 +41,9 @@ FRONT_OFFSET = 0.9  # m: fronts this far apart sideways still meet (about half a
 HEAD_ON = 135.0  # degrees between headings for an offset frontal contact
 # Lines that cross for a frontal crash meet at least as far apart as every oracle's frontal angle:
 # a crossing under it is no frontal crash (it used to be planned and then failed the replay). No
-# margin: crossings planned at 100-101 degrees replay at 99 on some junctions of SUMO's Braunschweig
-# network, but a 3-degree margin lost more sites on the town and the DRT city than it won there.
+# margin for the angle the bodies first touch at, which is not the lines' (a front corner touches
+# earlier in a turn: crossings at 100-101 degrees touched at 99 on SUMO's Braunschweig network):
+# synthesis measures that as the oracle does and refuses such a plan (compiler/synth/impact.py).
 FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 # A victim whose front has turned further than this from the striker's heading has left the lane
 # they shared: 15 degrees inside every oracle's bound for a rear-end.

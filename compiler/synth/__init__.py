@@ -1,24 +1,28 @@
 """Trajectory synthesis: OMPL paths, Ruckig timing, TOPP-RA checks; a lowered scenario becomes a Plan.
 
 plan = synthesize(lowered, step=0.1, seed=0)
+plan = synthesize_first(stagings_on(staged, match, road_map, notes))  # the first staging it accepts
 
 Each participant's route becomes a Dubins path (paths.py; the legs of a three-point turn are
 driven as lowering laid them out, legs.py), its solved schedule a jerk-limited arc-length
 profile (timing.py), and sampling both at the plan's step gives (t, x, y, heading, speed):
 the heading the body faces, the speed negative on a reverse leg. TOPP-RA then checks that every
 vehicle's profile stays under the fastest drivable speed along its path (limits.py), leg by
-leg; a profile over it is an error.
+leg; a profile over it is an error. So is a plan whose bodies would not first touch as
+the crash type needs (impact.py).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 import numpy as np
 from sovarc.compiler.lower import Lowered
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.solve import AFTER_CRASH
 from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.synth.impact import check_impact
 from sovarc.compiler.synth.legs import RoutePath
 from sovarc.compiler.synth.limits import worst_ratio
 from sovarc.compiler.synth.timing import knots, sample
@@ -57,7 +61,21 @@ def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
         trajectories=tuple(trajectories),
         notes=tuple(notes),
     )
+    check_impact(plan)
     return plan
+
+
+def synthesize_first(candidates: Iterable[Lowered], *, seed: int = 0) -> Plan:
+    """The plan of the first candidate synthesis accepts: one it refuses gives way to the next
+    (another contact, staging or rotation of the site). All refused: the first refusal."""
+    first: SynthesisError | None = None
+    for lowered in candidates:
+        try:
+            return synthesize(lowered, seed=seed)
+        except SynthesisError as error:
+            first = first or error
+    assert first is not None, "lowering yields a staging or raises"
+    raise first
 
 
 def _trajectory(

@@ -30,17 +30,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from sovarc.compiler.plan import Plan, Trajectory
-from sovarc.dsl.ir import ActionKind, CrashType
-from sovarc.targets.sumo.bodies import Body, Contact, closest_points, first_touch, overlap
+from sovarc.dsl.ir import ActionKind
+from sovarc.targets.sumo.bodies import Body, Contact, closest_points
+from sovarc.targets.sumo.impact import body_at, face_words, first_overlap, fits, needs, touch
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
-from sovarc.targets.verdict import CRASH_ANGLES, LINE_TOLERANCE, Finding, Verdict
+from sovarc.targets.verdict import LINE_TOLERANCE, Finding, Verdict
 
 TARGET = "sumo"
 TRACK_TOLERANCE = 0.10  # m between a replayed position and its sample
-REAR_END_MAX_ANGLE = CRASH_ANGLES["rear_end"][1]
-FRONTAL_MIN_ANGLE = CRASH_ANGLES["frontal"][0]
-VICTIM_FACES = {CrashType.REAR_END: ("rear",), CrashType.FRONTAL: ("front",), CrashType.SIDE: ("left", "right")}
 
 
 @dataclass(frozen=True)
@@ -91,7 +89,12 @@ def _t(value: float) -> float:
 
 
 def body_of(t: Trajectory, pose: Pose) -> Body:
-    return Body(pose.x, pose.y, pose.angle, t.body.length, t.body.width, t.body.vclass != "pedestrian")
+    return body_at(t, pose.x, pose.y, pose.angle)
+
+
+def _bodies(plan: Plan, trace: Trace, participant: str) -> list[Body | None]:
+    t = plan.trajectory(participant)
+    return [None if pose is None else body_of(t, pose) for pose in trace.poses[participant]]
 
 
 def _crashes(plan: Plan, trace: Trace) -> tuple[list[Crash], list[tuple[str, str]]]:
@@ -118,26 +121,15 @@ def _crashes(plan: Plan, trace: Trace) -> tuple[list[Crash], list[tuple[str, str
 
 
 def _first_overlap(plan: Plan, trace: Trace, a: str, b: str) -> int | None:
-    ta, tb = plan.trajectory(a), plan.trajectory(b)
-    for k, (pa, pb) in enumerate(zip(trace.poses[a], trace.poses[b], strict=True)):
-        if pa is not None and pb is not None and overlap(body_of(ta, pa), body_of(tb, pb)):
-            return k
-    return None
+    return first_overlap(_bodies(plan, trace, a), _bodies(plan, trace, b))
 
 
 def _contact(plan: Plan, trace: Trace) -> Contact:
     """The striker's and victim's first touch, from the poses SUMO had them in."""
-    s, v = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
-    k = _first_overlap(plan, trace, s.participant, v.participant)
-    assert k is not None, "a crash is confirmed by the bodies"
-    j = max(k - 1, 0)
-    ps, pv = trace.poses[s.participant], trace.poses[v.participant]
-    if any(p is None for p in (ps[j], ps[k], pv[j], pv[k])):
-        j = k
-    pose = {name: p for name, p in (("s0", ps[j]), ("s1", ps[k]), ("v0", pv[j]), ("v1", pv[k]))}
-    assert all(p is not None for p in pose.values())
-    bodies = {name: body_of(s if name[0] == "s" else v, p) for name, p in pose.items() if p is not None}
-    return first_touch(trace.times[j], trace.times[k], (bodies["s0"], bodies["s1"]), (bodies["v0"], bodies["v1"]))
+    s, v = plan.impact.striker, plan.impact.victim
+    contact = touch(trace.times, _bodies(plan, trace, s), _bodies(plan, trace, v))
+    assert contact is not None, "a crash is confirmed by the bodies"
+    return contact
 
 
 # --- findings ---------------------------------------------------------------------------
@@ -213,25 +205,10 @@ def _angle_finding(plan: Plan, contact: Contact | None) -> Finding:
         return Finding("impact_angle", False, f"no {kind.value} impact: the striker and victim do not collide")
     striker, victim = plan.impact.striker, plan.impact.victim
     s_zone, v_zone = contact.zones
-    seen = f"{striker}'s {_face_words(s_zone)} meets {victim}'s {_face_words(v_zone)} at {contact.angle:.0f} degrees"
-    wanted = " or ".join(_face_words((face,)) for face in VICTIM_FACES[kind])
-    expected = f"{kind.value} needs {striker}'s front into {victim}'s {wanted}"
-    ok = "front" in s_zone and any(face in v_zone for face in VICTIM_FACES[kind])
-    if kind is CrashType.REAR_END:
-        ok = ok and contact.angle <= REAR_END_MAX_ANGLE
-        expected += f", headings within {REAR_END_MAX_ANGLE:.0f} degrees"
-    elif kind is CrashType.FRONTAL:
-        ok = ok and contact.angle >= FRONTAL_MIN_ANGLE
-        expected += f", headings at least {FRONTAL_MIN_ANGLE:.0f} degrees apart"
-    message = f"{seen} ({kind.value})" if ok else f"{seen}; {expected}"
+    seen = f"{striker}'s {face_words(s_zone)} meets {victim}'s {face_words(v_zone)} at {contact.angle:.0f} degrees"
+    ok = fits(kind, contact)
+    message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim)}"
     return Finding("impact_angle", ok, message, _t(contact.time))
-
-
-def _face_words(zone: tuple[str, ...]) -> str:
-    """('front',) -> 'front'; ('left',) -> 'left side'; ('front', 'left') -> 'front-left corner'."""
-    if len(zone) == 2:
-        return f"{zone[0]}-{zone[1]} corner"
-    return f"{zone[0]} side" if zone[0] in {"left", "right"} else zone[0]
 
 
 def _lanes_finding(plan: Plan, trace: Trace, network: Network, until: float) -> Finding:
