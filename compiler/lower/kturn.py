@@ -245,7 +245,7 @@ def choose(
     its number, its d and the layout; None when it reaches none."""
     d_from = band.place(start)[1]
     for number, line in lanes:
-        d_to = band.place(line.point(line.project(start)[0]))[1]
+        d_to = band.d_abreast(line, start)
         plan = layout(band, d_from, d_to, body)
         if plan is not None:
             return number, d_to, plan

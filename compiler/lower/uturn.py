@@ -82,6 +82,10 @@ class Band:
         along = v[0] * f[0] + v[1] * f[1]
         return s + (along if s <= 1e-9 or s >= self.base.length - 1e-9 else 0.0), v[0] * n[0] + v[1] * n[1]
 
+    def d_abreast(self, line: Polyline, p: Point) -> float:
+        """The d of `line` (a lane's centre) where it is abreast of the point p."""
+        return self.place(line.point(line.project(p)[0]))[1]
+
 
 @dataclass(frozen=True)
 class Layout:
@@ -176,7 +180,7 @@ def choose(band: Band, start: Point, lanes: Sequence[tuple[int, Polyline]], body
     d_from = band.place(start)[1]
     options = []
     for rank, (number, line) in enumerate(lanes):
-        d_to = band.place(line.point(line.project(start)[0]))[1]
+        d_to = band.d_abreast(line, start)
         plan = layout(band, d_from, d_to, body)
         after = abs(plan.d1 - d_to)
         options.append(((after > NEAR, after if after > NEAR else 0.0, rank), number, d_to, plan))
@@ -232,10 +236,17 @@ def move_across(s: float, d_from: float, d_to: float, length: float, *, forward:
 def footprint(line: Polyline, band: Band, body: Body, step: float = 0.5) -> tuple[float, float]:
     """The least and the greatest d any corner of the body reaches while its front bumper
     follows `line` (heading along it): the road is [band.right, band.left]."""
+    at = np.arange(0.0, line.length, step)
+    return corner_span(line, at, line.headings(at), band, body)
+
+
+def corner_span(line: Polyline, at: np.ndarray, headings: np.ndarray, band: Band, body: Body) -> tuple[float, float]:
+    """The least and the greatest d of the body's corners with its front bumper at `line`'s arc
+    lengths `at`, facing `headings` (compass degrees; the line's own, or those of a turn in legs)."""
     low, high = math.inf, -math.inf
-    for s in np.arange(0.0, line.length, step):
+    for s, heading in zip(at, headings, strict=True):
         front = line.point(float(s))
-        f = unit(line.heading(float(s)))
+        f = unit(float(heading))
         left = (-f[1], f[0])
         for back in (0.0, body.length):
             for side in (-body.width / 2.0, body.width / 2.0):

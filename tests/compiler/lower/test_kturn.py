@@ -8,8 +8,7 @@ import numpy as np
 import pytest
 from sovarc.compiler.lower.corridor import Drive
 from sovarc.compiler.lower.kturn import AXLE_RADIUS, KERB_OVERHANG, STEP, corners_d, layout
-from sovarc.compiler.lower.polyline import unit
-from sovarc.compiler.lower.uturn import Band
+from sovarc.compiler.lower.uturn import Band, corner_span
 from sovarc.compiler.plan import CAR, REAR_OVERHANG
 from sovarc.targets.verdict import LINE_TOLERANCE
 
@@ -96,16 +95,7 @@ def test_the_body_placed_from_the_heading_stays_on_the_road() -> None:
     drive, band = _turned(width), _band(width)
     turn = drive.manoeuvres[0]
     ahead = CAR.length * (1.0 - REAR_OVERHANG)
-    low, high = math.inf, -math.inf
-    for s, heading in zip(turn.s, turn.heading, strict=True):
-        front = drive.line.point(float(s))
-        f = unit(float(heading))
-        left = (-f[1], f[0])
-        for back in (0.0, CAR.length):
-            for side in (-CAR.width / 2.0, CAR.width / 2.0):
-                corner = (front[0] - back * f[0] + side * left[0], front[1] - back * f[1] + side * left[1])
-                d = band.place(corner)[1]
-                low, high = min(low, d), max(high, d)
+    low, high = corner_span(drive.line, turn.s, turn.heading, band, CAR)
     assert band.right - KERB_OVERHANG - 0.01 <= low and high <= band.left + KERB_OVERHANG + 0.01
     # the front bumper moves as the rear axle's arcs say: it leaves the kerb at an angle to the heading
     leaves = drive.line.heading(turn.stops[0] + 0.05)

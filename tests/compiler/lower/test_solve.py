@@ -1,4 +1,4 @@
-"""Z3's answer depends on the problem only: never on the clock, so never on the machine's load."""
+"""Z3's answer does not hang on its time limits: a problem one engine is lost on goes to the other."""
 
 from __future__ import annotations
 
