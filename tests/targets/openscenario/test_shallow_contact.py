@@ -7,15 +7,29 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sovarc.compiler.backend import folder_name
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.synth import synthesize
 from sovarc.dsl import parse
 from sovarc.targets.openscenario import check, emit_files
+from sovarc.targets.verdict import Verdict
 
 from tests.targets.openscenario.plans import TOWN
 
 pytestmark = pytest.mark.slow  # netconvert writes the .xodr
+
+
+def verdicts(text: str, tmp_path: Path) -> list[tuple[str, Verdict]]:
+    """The OpenSCENARIO oracle's verdict on each of the 3 town sites the scenario is staged on."""
+    town = load_map(TOWN)
+    staged, notes, matches = sites_for(parse(text, "shallow.sov"), town, roads=3)
+    out = []
+    for match in matches:
+        plan = synthesize(lower_on(staged, match, town, notes))
+        out.append((match.site.id, check(emit_files(plan, tmp_path / folder_name(match.site.id)).xosc, plan)))
+    return out
+
 
 # V1 stops at a T's stem, then turns left into lane 2; V2, in lane 1 of the road it turns onto,
 # strikes it as it drifts over at about 6 degrees (NMVCCS t_0, rewritten)
@@ -29,12 +43,8 @@ DRIFT = """scenario drift_into_lane_2 {
 
 
 def test_a_turn_into_the_partners_lane_first_touches_in_the_collision_area(tmp_path: Path) -> None:
-    town = load_map(TOWN)
-    staged, notes, matches = sites_for(parse(DRIFT, "drift.sov"), town, roads=3)
-    for match in matches:
-        plan = synthesize(lower_on(staged, match, town, notes))
-        verdict = check(emit_files(plan, tmp_path / match.site.id.replace(":", "_")).xosc, plan)
-        assert verdict.passed, (match.site.id, verdict.dumps())
+    for site, verdict in verdicts(DRIFT, tmp_path):
+        assert verdict.passed, (site, verdict.dumps())
         assert verdict.facts["relative_heading"] < 15.0  # a drift into the lane, not a crossing
 
 
@@ -50,9 +60,5 @@ U_TURN_ACROSS = """scenario u_turn_across {
 
 
 def test_a_slow_u_turn_across_the_car_beside_first_touches_in_the_collision_area(tmp_path: Path) -> None:
-    town = load_map(TOWN)
-    staged, notes, matches = sites_for(parse(U_TURN_ACROSS, "u_turn.sov"), town, roads=3)
-    for match in matches:
-        plan = synthesize(lower_on(staged, match, town, notes))
-        verdict = check(emit_files(plan, tmp_path / match.site.id.replace(":", "_").replace("|", "_")).xosc, plan)
-        assert verdict.passed, (match.site.id, verdict.dumps())
+    for site, verdict in verdicts(U_TURN_ACROSS, tmp_path):
+        assert verdict.passed, (site, verdict.dumps())
