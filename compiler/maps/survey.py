@@ -1,9 +1,9 @@
 """What the compiler sees in a map, shown to its user: the sites per kind, listed and drawn.
 
-    report = survey(road_map)                 # every site, per kind
-    print(report.text())                      # one line per site: arms, lanes, widths
-    draw(road_map, report.sites, "map.png")   # the map with its sites marked
-    missing(road_map, RoadKind.INTERSECTION)  # why a scenario of that kind finds no site, or None
+report = survey(road_map)                 # every site, per kind
+print(report.text())                      # one line per site: arms, lanes, widths
+draw(road_map, report.sites, "map.png")   # the map with its sites marked
+missing(road_map, RoadKind.INTERSECTION)  # why a scenario of that kind finds no site, or None
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from sovarc.compiler.maps.load import RoadMap
+from sovarc.compiler.maps.roads import is_road
 from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
 from sovarc.dsl.ir import RoadKind
 
@@ -94,8 +95,6 @@ def draw(road_map: RoadMap, sites: tuple[Site, ...] | list[Site], path: str | os
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-
-    from sovarc.compiler.maps.roads import is_road
 
     figure, axes = plt.subplots(figsize=(12, 12))
     for edge in road_map.net.getEdges():
