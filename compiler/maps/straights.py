@@ -22,7 +22,10 @@ from sovarc.dsl.ir import RoadKind
 STEP = 2.0  # m between samples along a road
 STRAIGHT_RADIUS = 400.0  # m: a straight stretch turns no more than a curve of this radius would
 STRAIGHT_TURN = 15.0  # degrees: and never more than this in all
-SITE_MAX = 250.0  # m: a longer stretch gives several sites
+SITE_MAX = 250.0  # m: a stretch twice as long or more gives several sites, each at least this long
+LOCAL = 20.0  # m: the chords on which a bend is judged
+LOCAL_SLACK = 1.5  # a bend up to this many times STRAIGHT_RADIUS's turn over LOCAL is noise, not a bend
+SNAP = STEP + 0.5  # m: a stretch this close to its edges' ends runs to them
 # Inner lane edges of the two directions further apart than this: a divided road. Its halves
 # are staged as one-way roads, because a median (often with paths or rails on it) is no lane
 # line a wrong-way or overtaking car can cross.
@@ -43,7 +46,7 @@ def straight_sites(roads: RoadNet, min_length: float) -> list[Any]:
         for lo, hi, two_way in road.stretches(min_length):
             if two_way and road.partner is not None and road.partner.first < road.first:
                 continue  # the partner's walk stages the two-way stretch (it sees the same one)
-            count = max(1, math.ceil((hi - lo) / SITE_MAX - 1e-9))
+            count = max(1, int((hi - lo) // max(SITE_MAX, min_length)))
             step = (hi - lo) / count
             for k in range(count):
                 directions = road.cut(lo + k * step, lo + (k + 1) * step, two_way)
@@ -111,6 +114,9 @@ class _Direction:
     ) -> tuple[str, tuple[LaneInfo, ...]] | None:
         """Its car lanes from arc length `lo` to `hi`, chained over the edges there and cut to the stretch."""
         first, last = int(self.edge_at(np.array([lo + 0.1]))[0]), int(self.edge_at(np.array([hi - 0.1]))[0])
+        # within a sample of its edges' ends, a stretch runs to them
+        lo = float(self.bounds[first]) if lo - self.bounds[first] <= SNAP else lo
+        hi = float(self.bounds[last + 1]) if self.bounds[last + 1] - hi <= SNAP else hi
         edges = self.edges[first : last + 1]
         # tiny edges between lane sections may have other lanes: the longest edge names the lanes
         spans = [min(hi, self.bounds[k + 1]) - max(lo, self.bounds[k]) for k in range(first, last + 1)]
@@ -125,9 +131,9 @@ class _Direction:
             shape = cut(lane.shape, t0, t1)
             lanes.append(replace(lane, shape=shape, length=round(shape_length(shape), 3)))
         name = edges[0].getID() + (f"..{edges[-1].getID()}" if len(edges) > 1 else "")
-        whole = abs(lo - self.bounds[first]) < 1.0 and abs(hi - self.bounds[last + 1]) < 1.0
+        whole = lo == self.bounds[first] and hi == self.bounds[last + 1]
         if not whole:
-            name += f"@{lo - self.bounds[first]:.0f}"
+            name += f"@{max(0.0, lo - self.bounds[first]):.0f}"
         return name, tuple(lanes)
 
 
@@ -158,9 +164,10 @@ class _Road:
             t = total - along  # arc length along the partner's own direction
             at = back.edge_at(t)
             widths = (np.asarray(back.widths)[at] + np.asarray(own.widths)[own.edge_at(s)]) / 2.0
-            beside = (gap - widths <= MEDIAN_MAX) & (t > 0.5) & (t < total - 0.5)
+            beside = gap - widths <= MEDIAN_MAX
             keys = keys + np.where(beside, np.asarray(back.counts)[at], 0)
         headings = np.degrees(np.arctan2(*np.diff(points, axis=0).T)) % 360.0  # compass: atan2(dx, dy)
+        keys = np.where(_curved(points), -1, keys)
         found_stretches = []
         start = 0
         n = len(s)
@@ -176,7 +183,7 @@ class _Road:
                     break
                 lo_turn, hi_turn = lo2, hi2
                 end += 1
-            if s[end] - s[start] >= min_length:
+            if s[end] - s[start] >= min_length and keys[start] >= 0:
                 found_stretches.append((float(s[start]), float(s[end]), bool(keys[start] % 100 > 0)))
             start = end
         return found_stretches
@@ -195,6 +202,22 @@ class _Road:
         if other is None:
             return None
         return [own, other]
+
+
+def _curved(points: np.ndarray) -> np.ndarray:
+    """Per sample: whether the road bends there more tightly than STRAIGHT_RADIUS (with some slack
+    for the noise of polylines), judged on the chords LOCAL metres before and after it."""
+    w = max(1, round(LOCAL / STEP))
+    n = len(points)
+    k = np.arange(n)
+    before, after = np.clip(k - w, 0, n - 1), np.clip(k + w, 0, n - 1)
+    back = points[k] - points[before]
+    ahead = points[after] - points[k]
+    h1 = np.degrees(np.arctan2(back[:, 0], back[:, 1]))
+    h2 = np.degrees(np.arctan2(ahead[:, 0], ahead[:, 1]))
+    turn = np.abs((h2 - h1 + 180.0) % 360.0 - 180.0)
+    valid = (k - w >= 0) & (k + w <= n - 1)
+    return valid & (turn > LOCAL_SLACK * math.degrees(LOCAL / STRAIGHT_RADIUS))
 
 
 def _diff(a: float, b: float) -> float:
