@@ -113,7 +113,11 @@ class _Direction:
         hi: float,
     ) -> tuple[str, tuple[LaneInfo, ...]] | None:
         """Its car lanes from arc length `lo` to `hi`, chained over the edges there and cut to the stretch."""
-        first, last = int(self.edge_at(np.array([lo + 0.1]))[0]), int(self.edge_at(np.array([hi - 0.1]))[0])
+        # a stretch ends at the first sample past it: up to a sample into the next edge, which is left out
+        middle = (lo + hi) / 2.0
+        first = int(self.edge_at(np.array([min(lo + SNAP, middle)]))[0])
+        last = int(self.edge_at(np.array([max(hi - SNAP, middle)]))[0])
+        lo, hi = max(lo, float(self.bounds[first])), min(hi, float(self.bounds[last + 1]))
         # within a sample of its edges' ends, a stretch runs to them
         lo = float(self.bounds[first]) if lo - self.bounds[first] <= SNAP else lo
         hi = float(self.bounds[last + 1]) if self.bounds[last + 1] - hi <= SNAP else hi

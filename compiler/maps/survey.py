@@ -83,7 +83,7 @@ def _arm(arm: Arm) -> str:
         return "/".join(f"{lane.width:.1f}" for lane in lanes) or "-"
 
     return (
-        f"{arm.heading:.0f}° {len(arm.incoming)} in ({widths(arm.incoming)} m)"
+        f"{round(arm.heading) % 360}° {len(arm.incoming)} in ({widths(arm.incoming)} m)"
         f" + {len(arm.outgoing)} out ({widths(arm.outgoing)} m)"
     )
 
