@@ -24,6 +24,8 @@ from sovarc.compiler.maps.geometry import Shape, angle_diff, end_heading, shape_
 CAR = "passenger"  # the SUMO vehicle class a site's lanes must allow
 TINY = 2.0  # m: an edge this short (netconvert leaves some between lane sections) does not split a road
 PAIR_TOLERANCE = 40.0  # an incoming and an outgoing edge this close in direction form one arm
+THROUGH_TYPES = frozenset({"priority", "priority_stop"})  # junctions where a main road has the right of way
+THROUGH_TOLERANCE = 20.0  # degrees a main road may bend going through a junction
 
 
 @dataclass(frozen=True)
@@ -79,18 +81,41 @@ class RoadNet:
         self._next: dict[str, Any] = {}
         self._prev: dict[str, Any] = {}
         self._reverse: dict[str, Any] = {}
+        self._through_next: dict[str, Any] = {}  # a main road on through a priority junction
+        self._through_prev: dict[str, Any] = {}
         for node in net.getNodes():
             arms = self.arms[node.getID()]
             for arm in arms:
                 if arm.incoming is not None and arm.outgoing is not None:
                     self._reverse.setdefault(arm.incoming.getID(), arm.outgoing)
                     self._reverse.setdefault(arm.outgoing.getID(), arm.incoming)
-            if len(arms) != 2:
+            if len(arms) == 2:
+                for here, there in (arms, arms[::-1]):
+                    if (
+                        here.incoming is not None
+                        and there.outgoing is not None
+                        and _linked(here.incoming, there.outgoing)
+                    ):
+                        self._next[here.incoming.getID()] = there.outgoing
+                        self._prev[there.outgoing.getID()] = here.incoming
+            elif len(arms) == 3 and node.getType() in THROUGH_TYPES:
+                self._through_road(arms)
+
+    def _through_road(self, arms: tuple[NodeArm, ...]) -> None:
+        """A junction where one road runs straight on with the right of way and the others give way
+        to it: that road goes on through the junction (a straight site may span it)."""
+        pairs = []
+        for here, there in itertools.combinations(arms, 2):
+            if abs(angle_diff(here.heading, there.heading)) < 180.0 - THROUGH_TOLERANCE:
                 continue
-            for here, there in (arms, arms[::-1]):
-                if here.incoming is not None and there.outgoing is not None and _linked(here.incoming, there.outgoing):
-                    self._next[here.incoming.getID()] = there.outgoing
-                    self._prev[there.outgoing.getID()] = here.incoming
+            links = [(a.incoming, b.outgoing) for a, b in ((here, there), (there, here)) if a.incoming and b.outgoing]
+            if links and all(_major_straight(a, b) for a, b in links):
+                pairs.append(links)
+        if len(pairs) != 1:
+            return  # no road through, or two (a crossing of equals)
+        for a, b in pairs[0]:
+            self._through_next[a.getID()] = b
+            self._through_prev[b.getID()] = a
 
     # --- nodes ---
 
@@ -158,16 +183,26 @@ class RoadNet:
         """The edge of the other direction of the same road (paired in an arm at either end)."""
         return self._reverse.get(edge.getID())
 
-    def chain(self, edge: Any) -> list[Any]:
-        """The whole road `edge` is on, in its direction: back and on through pass-through nodes."""
+    def chain(self, edge: Any, *, through: bool = False) -> list[Any]:
+        """The whole road `edge` is on, in its direction: back and on through pass-through nodes
+        (and, with `through`, through the junctions where it is the main road)."""
         seen = {edge.getID()}
         edges = [edge]
-        while (before := self.prev_edge(edges[0])) is not None and before.getID() not in seen:
-            seen.add(before.getID())
-            edges.insert(0, before)
-        while (after := self.next_edge(edges[-1])) is not None and after.getID() not in seen:
-            seen.add(after.getID())
-            edges.append(after)
+
+        def before(e: Any) -> Any | None:
+            found = self.prev_edge(e)
+            return found if found is not None or not through else self._through_prev.get(e.getID())
+
+        def after(e: Any) -> Any | None:
+            found = self.next_edge(e)
+            return found if found is not None or not through else self._through_next.get(e.getID())
+
+        while (back := before(edges[0])) is not None and back.getID() not in seen:
+            seen.add(back.getID())
+            edges.insert(0, back)
+        while (on := after(edges[-1])) is not None and on.getID() not in seen:
+            seen.add(on.getID())
+            edges.append(on)
         return edges
 
     def reach(self, edge: Any, forward: bool, length: float) -> list[Any]:
@@ -256,6 +291,12 @@ class RoadNet:
 def axis(lanes: tuple[LaneInfo, ...]) -> Shape:
     """The shape that stands for a direction's lanes: its middle car lane."""
     return lanes[len(lanes) // 2].shape
+
+
+def _major_straight(a: Any, b: Any) -> bool:
+    """Whether edge `a` leads straight on into `b` with the right of way (SUMO's link state 'M')."""
+    links = a.getOutgoing().get(b, [])
+    return bool(links) and all(c.getDirection() == "s" and c.getState() == "M" for c in links)
 
 
 def _linked(a: Any, b: Any) -> bool:

@@ -40,7 +40,7 @@ def straight_sites(roads: RoadNet, min_length: float) -> list[Any]:
     for edge in sorted((e for e in roads.net.getEdges() if is_road(e)), key=lambda e: e.getID()):
         if edge.getID() in done or not roads.lanes(edge):
             continue
-        chain = roads.chain(edge)
+        chain = roads.chain(edge, through=True)
         done.update(e.getID() for e in chain)
         road = _Road(roads, chain)
         for lo, hi, two_way in road.stretches(min_length):
@@ -150,7 +150,7 @@ class _Road:
         backs = [
             b for e in chain if (b := roads.reverse(e)) is not None and b.getID() not in {x.getID() for x in chain}
         ]
-        self.partner = _Direction(roads, roads.chain(backs[0])) if backs else None
+        self.partner = _Direction(roads, roads.chain(backs[0], through=True)) if backs else None
 
     def stretches(self, min_length: float) -> list[tuple[float, float, bool]]:
         """Straight stretches at least `min_length` long: (from, to, two-way), in arc length along `own`."""

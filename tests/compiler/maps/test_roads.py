@@ -67,9 +67,15 @@ def test_a_lane_drop_ends_a_straight_stretch_and_a_junction_arm(tmp_path: Path) 
     # two lanes each way for 100 m, then one lane for 100 m up to a T with a side road
     nodes = {"a": (0, 0), "b": (100, 0), "c": (200, 0), "d": (300, 0), "s": (200, -100)}
     road_map = build(tmp_path, nodes, ["wide a b 2", "narrow b c 1", "on c d 1", "side c s 1"])
-    assert kinds(road_map) == {T: 1, S: 4}  # the two-lane road, the one-lane road, the T's other two arms
-    lanes = sorted(s.lanes for s in find_sites(road_map, S))
-    assert lanes == [1, 1, 1, 2]
+    # the two-lane road; the one-lane road, on through the T where it has the right of way; the side road
+    assert kinds(road_map) == {T: 1, S: 3}
+    lanes = {s.id: s.lanes for s in find_sites(road_map, S)}
+    assert sorted(lanes.values()) == [1, 1, 2]
+    (through,) = [
+        s for s in find_sites(road_map, S) if "narrow" in s.arms[0].incoming[0].edges + s.arms[1].incoming[0].edges
+    ]
+    east = next(a for a in through.arms if round(a.heading) == 90)
+    assert east.incoming[0].edges == ("narrow", "on") and east.incoming[0].lanes[1].startswith(":c_")
     (tee,) = find_sites(road_map, T)
     west = next(a for a in tee.arms if a.id == "narrow")
     assert [lane.edges for lane in west.incoming] == [("narrow",)]  # not back into the two-lane road
@@ -111,14 +117,14 @@ def test_the_survey_lists_draws_and_says_what_is_missing(tmp_path: Path) -> None
     road_map = build(tmp_path, nodes, ["wide a b 2", "narrow b c 1", "on c d 1", "side c s 1"])
     report = survey(road_map)
     text = report.text()
-    assert text.splitlines()[0] == "n.net.xml: 0 intersections, 1 T-junctions, 4 straight roads"
-    assert "T-junctions (1):" in text and "straight roads (4):" in text
+    assert text.splitlines()[0] == "n.net.xml: 0 intersections, 1 T-junctions, 3 straight roads"
+    assert "T-junctions (1):" in text and "straight roads (3):" in text
     tee = find_sites(road_map, T)[0]
     assert describe(tee).startswith("junction:c at (200, 100) priority")  # netconvert moves the map
     assert "1 in (3.2 m) + 1 out (3.2 m)" in describe(tee)
-    assert [s.kind for s in survey(road_map, "straight").sites] == [S, S, S, S]
+    assert [s.kind for s in survey(road_map, "straight").sites] == [S, S, S]
     assert missing(road_map, X) == (
-        "n.net.xml has no intersection (a 4-way junction): it has 0 intersections, 1 T-junctions, 4 straight roads"
+        "n.net.xml has no intersection (a 4-way junction): it has 0 intersections, 1 T-junctions, 3 straight roads"
     )
     assert missing(road_map, T) is None
     png = draw(road_map, report.sites, tmp_path / "map.png")

@@ -26,7 +26,7 @@ def test_rebuilding_the_town_gives_the_same_bytes() -> None:
 
 def test_site_counts_per_kind(town: RoadMap) -> None:
     counts = Counter(site.kind for site in find_sites(town))
-    assert counts == {RoadKind.INTERSECTION: 5, RoadKind.T_JUNCTION: 4, RoadKind.STRAIGHT: 22}
+    assert counts == {RoadKind.INTERSECTION: 5, RoadKind.T_JUNCTION: 4, RoadKind.STRAIGHT: 21}
     assert [s.id for s in find_sites(town, RoadKind.T_JUNCTION)] == [
         "junction:t_mill_s",
         "junction:t_north",
