@@ -231,6 +231,8 @@ def _no_fit(
     counts = Counter(s.kind for s in sites)
     have = ", ".join(f"{counts[k]} {KIND_NAMES[k][1]}" + _most_lanes(sites, k) for k in RoadKind)
     message = f"no site of {road_map.name} fits scenario '{scenario.name}': it needs {kind} with {asked}"
+    if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
+        message = f"{road_map.name} has no {kind.split(' ', 1)[1]} for scenario '{scenario.name}' ({asked})"
     message += f"; the map has {have}"
     hint = "some sites fit with fewer lanes; match with clamp=True to use them" if could_clamp else None
     return Diagnostic(message, scenario.road.meta.where("kind") or scenario.meta.span, hint=hint)

@@ -11,6 +11,12 @@ direction of travel of traffic ENTERING the junction along it; for an exit-only 
 direction traffic would enter by. A straight site has one arm per direction of travel:
 its `incoming` lanes travel in `heading`, its `outgoing` lanes the other way.
 
+Roads are read as a person sees them, not edge by edge (roads.py): a road runs on through the
+nodes netconvert adds where lanes begin or end, so a junction's arm reaches back through them
+(while its lane count stays, up to ARM_REACH) and a straight site is a stretch of bounded
+curvature along a road, wherever its edges split (straights.py). Such a lane is a chain of SUMO
+lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings.
+
 Each site lays a compass cross over its arms (`Site.orientation`, `Arm.slot`): arm slot k
 ideally has heading `orientation + 90 * k`. The site search rotates reports on this cross.
 """

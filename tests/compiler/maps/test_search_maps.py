@@ -97,8 +97,8 @@ def test_no_site_of_the_kind_is_a_lowering_error(opendrive: dict[str, RoadMap]) 
         match_sites(scenario("t_junction_u_turn_side"), opendrive["straight_500m"])
     message = caught.value.diagnostics[0].message
     assert message == (
-        "no site of straight_500m.xodr fits scenario 't_junction_u_turn_side': it needs a T-junction with "
-        "V1 heading north: 2 lanes, u_turn; V2 heading south: 2 lanes; "
+        "straight_500m.xodr has no T-junction for scenario 't_junction_u_turn_side' "
+        "(V1 heading north: 2 lanes, u_turn; V2 heading south: 2 lanes); "
         "the map has 0 intersections, 0 T-junctions, 2 straight roads (at most 1 lane per direction)"
     )
     assert caught.value.diagnostics[0].hint is None
