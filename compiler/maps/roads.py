@@ -337,11 +337,23 @@ def project(points: np.ndarray, p: Sequence[float]) -> tuple[float, float]:
     return float(s[k] + u[k] * math.sqrt(lengths2[k])), float(gaps[k])
 
 
-def project_many(line: np.ndarray, points: np.ndarray, chunk: int = 256) -> tuple[np.ndarray, np.ndarray]:
-    """`project` for many points (n x 2): arc lengths and distances, n each."""
+def project_many(
+    line: np.ndarray, points: np.ndarray, chunk: int = 256, near: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """`project` for many points (n x 2): arc lengths and distances, n each. With `near`, only the
+    segments that come that close to the points' bounding box are tried (a point further from
+    every one of them gets a distance over `near`, not the true one)."""
     a, ab = line[:-1], line[1:] - line[:-1]
     lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
     s = cumulative(line)
+    if near is not None:
+        low, high = points.min(axis=0) - near, points.max(axis=0) + near
+        keep = ~(
+            (np.minimum(line[:-1], line[1:]) > high).any(axis=1) | (np.maximum(line[:-1], line[1:]) < low).any(axis=1)
+        )
+        if not keep.any():
+            return np.zeros(len(points)), np.full(len(points), np.inf)
+        a, ab, lengths2, s = a[keep], ab[keep], lengths2[keep], s[:-1][keep]
     along, gaps = [], []
     for k in range(0, len(points), chunk):
         rel = points[k : k + chunk, None, :] - a[None, :, :]

@@ -164,7 +164,7 @@ class _Road:
             back = self.partner
             reversed_points = back.points[::-1]
             total = back.length
-            along, gap = project_many(reversed_points, points)
+            along, gap = project_many(reversed_points, points, near=MEDIAN_MAX + 2.0 * max(own.widths + back.widths))
             t = total - along  # arc length along the partner's own direction
             at = back.edge_at(t)
             widths = (np.asarray(back.widths)[at] + np.asarray(own.widths)[own.edge_at(s)]) / 2.0
