@@ -136,3 +136,22 @@ def test_the_survey_lists_draws_and_says_what_is_missing(tmp_path: Path) -> None
 def test_carla_town_site_lists(town: str, golden: object) -> None:
     road_map = load_map(CARLA / f"{town}.xodr")
     golden.check(HERE / "golden" / f"{town}.sites", survey(road_map).text())  # type: ignore[attr-defined]
+
+
+def test_a_scenario_is_staged_across_a_road_of_several_edges(tmp_path: Path) -> None:
+    from sovarc.compiler.lower import lower
+    from sovarc.compiler.synth import synthesize
+
+    from tests.compiler.maps.conftest import scenario
+
+    # 300 m of two-lane road (each way) in five 60 m edges: only the chained road is a site
+    nodes = {f"n{k}": (60.0 * k, 0.0) for k in range(6)}
+    road_map = build(tmp_path, nodes, [f"e{k} n{k} n{k + 1} 2" for k in range(5)])
+    (lowered,) = lower(scenario("straight_rear_end_stopped_traffic"), road_map, seed=0)
+    plan = synthesize(lowered, seed=0)
+    forward = [f"e{k}" for k in range(5)]
+    backward = [f"-e{k}" for k in reversed(range(5))]
+    for t in plan.trajectories:
+        assert t.edges in (tuple(forward), tuple(backward))  # a route along the chain, in order
+        internal = {lane for lane in t.lanes if lane.startswith(":")}
+        assert len(internal) >= 4  # the lanes between its edges are its own to drive on
