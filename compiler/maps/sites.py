@@ -71,7 +71,9 @@ class Arm:
 class Site:
     """A place of one road kind where a scenario can happen."""
 
-    id: str  # 'junction:<SUMO junction id>' or 'road:<edge id>[|<reverse edge id>]'
+    # 'junction:<SUMO junction id>', or 'road:<direction>[|<other direction>]', a direction named by its
+    # first edge ('<first>..<last>' over several), with '@<m>' when it begins or ends inside an edge
+    id: str
     kind: RoadKind
     centre: Point  # the junction's point, or the middle of the road
     orientation: float  # degrees in [-45, 45): the compass cross's offset from true north
