@@ -98,6 +98,15 @@ def test_a_divided_road_gives_one_way_sites(tmp_path: Path) -> None:
     road_map = build(tmp_path, nodes, ["east a b 2 oneway", "west c d 2 oneway"])
     sites = find_sites(road_map)
     assert [(len(s.arms), s.arms[0].two_way) for s in sites] == [(1, False), (1, False)]
+    # a pass over the centre line finds no lane line to cross here, and the miss says whose need fails
+    from sovarc.compiler.maps import match_sites
+    from sovarc.dsl.errors import LoweringError
+
+    from tests.compiler.maps.conftest import scenario
+
+    with pytest.raises(LoweringError) as caught:
+        match_sites(scenario("straight_double_yellow_pass_frontal"), road_map)
+    assert "; of its 2 straight roads, each participant alone fits: V1 0, V2 2" in caught.value.diagnostics[0].message
 
 
 def test_junctions_are_recognised_by_their_arms_headings(tmp_path: Path) -> None:
