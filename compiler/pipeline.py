@@ -228,6 +228,10 @@ PIPELINE: tuple[Stage, ...] = (
 STAGE_NAMES: tuple[str, ...] = tuple(s.name for s in PIPELINE)
 
 
+def stage_named(name: str) -> Stage:
+    return PIPELINE[STAGE_NAMES.index(name)]
+
+
 class PipelineError(SovarcError):
     stage = "pipeline"
 
