@@ -129,7 +129,7 @@ def _assume(scenario: Scenario, options: Options, log: RunLog) -> Assumed:
 
 
 def _render_assumed(assumed: Assumed) -> str:
-    notes = "".join(f"# assumed: {note}\n".replace("\n", " ").rstrip() + "\n" for note in assumed.notes)
+    notes = "".join("# assumed: " + " ".join(note.splitlines()) + "\n" for note in assumed.notes)
     return notes + to_text(assumed.scenario)
 
 

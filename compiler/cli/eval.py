@@ -14,7 +14,7 @@ from typing import Any
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
 from sovarc.compiler.evaluation.extraction import evaluate_extraction
 from sovarc.compiler.evaluation.srr import map_key, reconstruct, sov_files, srr_table
-from sovarc.compiler.evaluation.tests import scenario_files, tests_table
+from sovarc.compiler.evaluation.tests import load_ego, scenario_files, tests_table
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.pipeline import default_map
@@ -24,7 +24,6 @@ from sovarc.compiler.slots import folder_name
 from sovarc.dsl import verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
 from sovarc.dsl.ir import Scenario
-from sovarc.targets.fmu import reference_fmu, validate_fmu
 
 
 def cmd_eval(args: argparse.Namespace) -> int:
@@ -88,7 +87,7 @@ def cmd_eval_tests(args: argparse.Namespace) -> int:
         scenario, _ = load_scenario(path)
         verify_or_raise(scenario)
         scenarios.append(scenario)
-    ego = validate_fmu(args.ego or reference_fmu())
+    ego = load_ego(args.ego)
     report: dict[str, Any] = {}
     for map_path in args.map or [str(default_map())]:
         name = Path(map_path).name

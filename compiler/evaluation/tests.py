@@ -200,6 +200,12 @@ class TestsTable:
         }
 
 
+def load_ego(path: str | Path | None) -> EgoFmu:
+    """The driving system under test: the FMU at `path`, else the reference ego; refused when its interface is not
+    the one the FMU target drives (FmuInterfaceError lists every mismatch)."""
+    return validate_fmu(path or reference_fmu())
+
+
 def evaluate_tests(
     plans: Iterable[Plan],
     road_map: RoadMap,
