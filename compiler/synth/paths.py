@@ -18,10 +18,11 @@ from dataclasses import dataclass
 
 import numpy as np
 from ompl import base as ob
-from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.vehicles import PLANNED
 
 WAYPOINT_STEP = 4.0  # m
-MIN_RADIUS = 3.0  # m; a tight junction corner
+MIN_RADIUS = PLANNED.path_radius  # m; a tight junction corner (the vehicle model's)
 RADIUS_STEP = 1.08  # turning radii come in classes this far apart (a space per class)
 TIGHTER_STEPS = 4  # classes skipped per retry when a curve does not fit
 MAX_RADIUS = 2000.0

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from sovarc.compiler.plan import Body
+from sovarc.compiler.vehicles import CAR_MODEL, Body
 
-MAX_ACCEL = 4.0  # m/s²
-MAX_BRAKE = 8.0  # m/s², about the grip of dry asphalt
+MAX_ACCEL = CAR_MODEL.drive_accel  # m/s² (the vehicle model's)
+MAX_BRAKE = CAR_MODEL.drive_brake  # m/s², about the grip of dry asphalt
 MAX_STEER = 0.6  # rad
 MAX_SPEED = 50.0  # m/s
 SUBSTEPS = 2  # integration steps per communication step

@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 import pytest
+from sovarc.compiler.geometry.bodies import Contact
 from sovarc.dsl.ir import CrashType
-from sovarc.targets.sumo.bodies import Contact
 from sovarc.targets.sumo.oracle import _angle_finding
 
 from tests.targets.sumo.plans import SCENES
