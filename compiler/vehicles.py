@@ -58,6 +58,11 @@ class Model:
     front_radius: float  # m: the front bumper's path at full lock (a U-turn's half circle, at the tightest)
     drive_accel: float  # m/s^2: the most the simulated vehicle accelerates, whatever it is asked
     drive_brake: float  # m/s^2: the most it brakes (about the grip of dry asphalt)
+    # The FMU harness's bicycle model of the ego (targets/fmu/bicycle.py) has its own proportions:
+    # wheelbase 60 % of the length, overhangs equal (20 %). They are not yet the overhangs above
+    # (a 58 % wheelbase): making them one would change every FMU run.
+    drive_wheelbase: float  # of the length
+    drive_overhang: float  # of the length, at either end
     limits: Limits = PLANNED
 
 
@@ -69,8 +74,11 @@ CAR_MODEL = Model(
     front_radius=4.0,  # a 10-11 m kerb-to-kerb turning circle
     drive_accel=4.0,
     drive_brake=8.0,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
 )
 # A walker turns on the spot and has no axles: its overhangs and radii are 0 (no module asks them).
+# Only a vehicle is driven by an FMU; its drive_* fields are the car's, as they always were.
 PEDESTRIAN_MODEL = Model(
     Body(0.5, 0.6, "pedestrian"),
     rear_overhang=0.0,
@@ -79,6 +87,8 @@ PEDESTRIAN_MODEL = Model(
     front_radius=0.0,
     drive_accel=4.0,
     drive_brake=8.0,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
 )
 
 MODELS: dict[str, Model] = {m.body.vclass: m for m in (CAR_MODEL, PEDESTRIAN_MODEL)}

@@ -10,7 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
-from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.angles import compass, heading_vector
 from sovarc.compiler.geometry.polyline import Point, Polyline
 
 TANGENT = 5.0  # m either side over which the band's direction is measured (curved roads)
@@ -59,7 +59,7 @@ class Band:
     def heading(self, s: float) -> float:
         """The compass heading of the band's direction at arc length s (clamped to the base)."""
         _, f, _ = self._axes(min(max(s, 0.0), self.base.length))
-        return math.degrees(math.atan2(f[0], f[1])) % 360.0
+        return compass(f[0], f[1])
 
     def place(self, p: Point) -> tuple[float, float]:
         """(s, d) of a point."""

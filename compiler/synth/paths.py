@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from ompl import base as ob
+from sovarc.compiler.geometry.angles import compass
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.vehicles import PLANNED
 
@@ -186,7 +187,7 @@ def _interpolate(
 def _tangent(line: Polyline, s: float) -> float:
     """Compass heading of the chord over +-1 m: smoother than a single segment's."""
     a, b = line.point(max(0.0, s - 1.0)), line.point(min(line.length, s + 1.0))
-    return math.degrees(math.atan2(b[0] - a[0], b[1] - a[1])) % 360.0
+    return compass(b[0] - a[0], b[1] - a[1])
 
 
 def _yaw(compass: float) -> float:

@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.geometry.bodies import Box, overlap
 from sovarc.compiler.plan import Plan
 from sovarc.targets.fmu.geometry import (
@@ -147,7 +148,7 @@ def _contact_kind(run: Run) -> str:
     ego, other = run.ego_track, run.tracks[run.contact.other]
     if other.body.vclass == "pedestrian":
         return "pedestrian"
-    turn = abs(((float(other.heading[-1]) - float(ego.heading[-1]) + 180.0) % 360.0) - 180.0)
+    turn = abs(angle_diff(float(other.heading[-1]), float(ego.heading[-1])))
     if turn >= 150.0:
         return "head_on"
     if turn > 30.0:

@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.angles import angle_diff, heading_vector
 from sovarc.compiler.geometry.polyline import Point, Polyline
 from sovarc.compiler.plan import Plan, Sample, Trajectory
 from sovarc.targets.fmu.interface import PATH_POINTS, PATH_SPACING
@@ -144,7 +144,7 @@ def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneSh
             continue
         line = Polyline(shape, min_gap=PATH_GAP)
         s, dist = line.project_within(end, 0.0, line.length)
-        turn = abs((line.heading(s) - heading + 180.0) % 360.0 - 180.0)
+        turn = abs(angle_diff(line.heading(s), heading))
         if dist <= JOIN_REACH and turn <= JOIN_TURN and (best is None or dist < best[0]):
             best = (dist, line, s)
     if best is None:

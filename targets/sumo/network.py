@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from xml.etree import ElementTree
 
-from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.angles import angle_diff, compass
 
 Point = tuple[float, float]
 CELL = 10.0  # m, side of a spatial index cell
@@ -102,7 +102,7 @@ class Network:
                 best = (distance, s + u, math.copysign(distance, side) if distance else 0.0, ux, uy)
             s += seg
         distance, pos, offset, ux, uy = best
-        heading = math.degrees(math.atan2(ux, uy)) % 360.0
+        heading = compass(ux, uy)
         return Spot(lane, min(pos, lane.length), offset, heading), distance
 
     def locate(self, x: float, y: float, heading: float, prefer: frozenset[str], pedestrian: bool = False) -> Spot:
