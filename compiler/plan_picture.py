@@ -40,7 +40,9 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
         ax.plot([s.x for s in t.samples], [s.y for s in t.samples], color=colour, linewidth=1.5, zorder=4)
         ax.plot(t.samples[0].x, t.samples[0].y, "o", color=colour, zorder=5)
         at = t.at(plan.impact.time)
-        ax.add_patch(Polygon(Box.of(t.body, at.x, at.y, at.heading).corners(), color=colour, zorder=6))
+        box = Box.of(t.body, at.x, at.y, at.heading).corners()
+        box = box[3:] + box[:3]  # from the front-right corner, as the pictures were always drawn
+        ax.add_patch(Polygon(box, color=colour, zorder=6))
         ax.annotate(t.participant, (t.samples[0].x, t.samples[0].y), fontsize=9, color=colour, zorder=7)
     ax.set_xlim(mx - half, mx + half)
     ax.set_ylim(my - half, my + half)
