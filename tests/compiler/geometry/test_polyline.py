@@ -1,4 +1,4 @@
-"""The lowering's polyline: many-point distances agree with one-point projection."""
+"""The kernel's polyline: many-point distances agree with one-point projection."""
 
 from __future__ import annotations
 
