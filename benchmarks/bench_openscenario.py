@@ -32,7 +32,8 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 
-from sovarc.compiler.plan import CAR, Plan, dump_plan, plan_from_json  # noqa: E402
+from sovarc.compiler.plan import Plan, dump_plan, plan_from_json  # noqa: E402
+from sovarc.compiler.vehicles import CAR  # noqa: E402
 from sovarc.targets.openscenario import check, choose_ego, emit_files  # noqa: E402
 from sovarc.targets.openscenario.emit import build_document  # noqa: E402
 from sovarc.targets.openscenario.provenance import Options  # noqa: E402
@@ -178,7 +179,7 @@ CLASSES |= {f"{c} (SUMO only)": why for c, why in SUMO_ONLY.items()}
 CLASSES |= {f"{c} (OSC only)": why for c, why in OSC_ONLY.items()}
 
 
-# Known causes of faces named differently at the same first touch (SUMO's in targets/sumo/bodies.first_touch).
+# Known causes of faces named differently at the same first touch (SUMO's in compiler/geometry/bodies.first_touch).
 FACE_CAUSES = {
     "flat contact": (
         "the faces meet flat (headings within 1°): where along the touching stretch the contact lies turns on "

@@ -19,10 +19,10 @@ Conventions, shared by all targets and oracles:
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass
 from typing import Any
 
+from sovarc.compiler.vehicles import Body
 from sovarc.dsl.ir import CrashType, RoadKind, Role, Scenario
 from sovarc.dsl.jsonform import from_json, to_json
 
@@ -36,18 +36,6 @@ class Sample:
     y: float  # m
     heading: float  # compass degrees, [0, 360)
     speed: float  # m/s along the heading; negative while reversing (a three-point turn)
-
-
-@dataclass(frozen=True)
-class Body:
-    length: float  # m
-    width: float  # m
-    vclass: str  # SUMO vehicle class: passenger, pedestrian
-
-
-CAR = Body(4.6, 1.8, "passenger")
-REAR_OVERHANG = 0.22  # of a vehicle's length: how far ahead of its rear its rear axle lies (the axle it turns about)
-PEDESTRIAN = Body(0.5, 0.6, "pedestrian")
 
 
 @dataclass(frozen=True)
@@ -214,9 +202,3 @@ def plan_from_json(data: dict[str, Any], origin: str = "plan") -> Plan:
 
 def dump_plan(plan: Plan) -> str:
     return json.dumps(plan_to_json(plan), separators=(",", ":"), ensure_ascii=False) + "\n"
-
-
-def heading_vector(heading: float) -> tuple[float, float]:
-    """Unit vector of a compass heading."""
-    rad = math.radians(heading)
-    return (math.sin(rad), math.cos(rad))

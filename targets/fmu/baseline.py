@@ -16,7 +16,7 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point, Polyline
+from sovarc.compiler.geometry.polyline import Point, Polyline
 from sovarc.compiler.plan import Plan, Sample, Segment, Trajectory
 from sovarc.dsl.errors import OracleError
 from sovarc.targets.fmu.task import PATH_GAP

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sovarc.targets.fmu.geometry import corners
+from sovarc.compiler.geometry.bodies import Box
 from sovarc.targets.fmu.harness import Run
 from sovarc.targets.verdict import Verdict
 
@@ -35,7 +35,8 @@ def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
             colour = EGO_COLOUR if name == run.ego else NPC_COLOURS[(k - 1) % len(NPC_COLOURS)]
             label = f"{name} (ego)" if name == run.ego else name
             ax.plot(track.x, track.y, color=colour, linewidth=2 if name == run.ego else 1.2, zorder=3, label=label)
-            box = corners(float(track.x[-1]), float(track.y[-1]), float(track.heading[-1]), track.body)
+            box = Box.of(track.body, float(track.x[-1]), float(track.y[-1]), float(track.heading[-1])).corners()
+            box = box[3:] + box[:3]  # from the front-right corner, as the pictures were always drawn
             ax.add_patch(Polygon(box, closed=True, facecolor=colour, edgecolor="black", alpha=0.8, zorder=4))
         if run.contact is not None:
             ego = run.ego_track

@@ -14,15 +14,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sumo
+from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.frontend.truth import import_truth_file
+from sovarc.compiler.geometry.bodies import Box
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower import lower_on, sites_for
-from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.swing import MARGIN, Approach, keep_in_lane
 from sovarc.compiler.maps import RoadMap, load_map
-from sovarc.compiler.plan import CAR, Plan
+from sovarc.compiler.plan import Plan
 from sovarc.compiler.synth import synthesize
-from sovarc.targets.sumo.bodies import Body
-from sovarc.targets.verdict import LINE_TOLERANCE
+from sovarc.compiler.vehicles import CAR
 
 from tests.compiler.lower.staging import town
 from tests.conftest import SHARED
@@ -51,7 +52,7 @@ def _worst_reach(plan: Plan, participant: str, road_map: RoadMap, lane_id: str) 
             continue  # past the stop line
         if centre.project((s.x, s.y))[0] < trajectory.body.length:
             continue  # the rear is still on the lane before this one
-        body = Body(s.x, s.y, s.heading, trajectory.body.length, trajectory.body.width, True)
+        body = Box.of(trajectory.body, s.x, s.y, s.heading)
         corners = np.asarray(body.corners(shrink=LINE_TOLERANCE))
         worst = max(worst, float(centre.distances(corners).max()) - lane.getWidth() / 2.0)
     return worst

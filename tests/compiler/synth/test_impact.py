@@ -14,13 +14,13 @@ from pathlib import Path
 import pytest
 import sumo
 from sovarc.compiler import synth
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Trajectory
+from sovarc.compiler.crashes import CRASH_ANGLES, planned_touch
+from sovarc.compiler.plan import Impact, Plan, Sample, Trajectory
 from sovarc.compiler.synth.impact import check_impact
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 from sovarc.dsl.ir import CrashType, RoadKind, Role
-from sovarc.targets.sumo.impact import planned_touch
-from sovarc.targets.verdict import CRASH_ANGLES
 
 from tests.conftest import SHARED
 

@@ -8,8 +8,9 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 

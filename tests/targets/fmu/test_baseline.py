@@ -6,7 +6,7 @@ from dataclasses import replace
 
 import pytest
 import sumolib
-from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.targets.fmu import random_npcs
 
 from tests.targets.fmu.plans import TOWN, crossing, cut_in

@@ -12,7 +12,9 @@ import math
 from collections.abc import Callable
 from dataclasses import replace
 
-from sovarc.compiler.plan import CAR, PEDESTRIAN, Body, Impact, Plan, Sample, Trajectory, heading_vector
+from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.plan import Impact, Plan, Sample, Trajectory
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN, Body
 from sovarc.dsl import parse
 from sovarc.dsl.ir import Role
 

@@ -15,8 +15,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 import sumolib
-from sovarc.compiler.maps.geometry import compass, point_at, shape_length
-from sovarc.compiler.plan import CAR, PEDESTRIAN, Body, Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.geometry.angles import compass
+from sovarc.compiler.geometry.polyline import point_at, shape_length
+from sovarc.compiler.plan import Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN, Body
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 
