@@ -6,6 +6,7 @@ from __future__ import annotations
 import io
 import os
 
+from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.geometry.bodies import Box
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.plan import Plan
@@ -15,6 +16,8 @@ COLOURS = ("#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b")
 
 def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
     """The PNG bytes (matplotlib's Agg backend: no display needed; same plan, same bytes)."""
+    # matplotlib loads here, not with the module: it takes longer to import than most commands
+    # take to run, and only a command that draws needs it.
     import matplotlib
 
     matplotlib.use("Agg")
@@ -55,6 +58,4 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
 
 
 def write_picture(plan: Plan, road_map: RoadMap, path: str | os.PathLike[str]) -> None:
-    from sovarc.compiler.fsutil import write_atomic
-
     write_atomic(path, draw_plan(plan, road_map))

@@ -26,7 +26,7 @@ from sovarc.compiler.synth import synthesize
 from sovarc.compiler.vehicles import CAR
 
 from tests.compiler.lower.staging import town
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth" / "t"
 CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
@@ -58,12 +58,14 @@ def _worst_reach(plan: Plan, participant: str, road_map: RoadMap, lane_id: str) 
     return worst
 
 
+@requires_shared
 def test_a_right_turn_from_the_stop_line_keeps_the_rear_in_its_lane() -> None:
     """t/18 on t_north: V1 waits at the stop line, then turns right onto an exit lane 3.45 m away."""
     plan = _plan(18, town(), "junction:t_north")
     assert _worst_reach(plan, "V1", town(), "main2_1") < 0.0
 
 
+@requires_shared
 @pytest.mark.slow  # loads the DRT city network (about 2 s)
 def test_a_left_turn_and_a_bent_approach_keep_the_rear_in_the_lane_on_the_city() -> None:
     """t/19 on the city's junction 1560223462: V1's left turn starts 19 degrees off its lane, and
@@ -74,6 +76,7 @@ def test_a_left_turn_and_a_bent_approach_keep_the_rear_in_the_lane_on_the_city()
     assert _worst_reach(plan, "V2", city, "172013798#3_1") < 0.0
 
 
+@requires_shared
 @pytest.mark.slow  # replays in SUMO
 def test_the_sumo_oracle_sees_no_line_crossing_on_t_north() -> None:
     from sovarc.targets.sumo import check

@@ -22,7 +22,7 @@ from sovarc.dsl import parse
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 FRONTAL = CRASH_ANGLES["frontal"][0]
 MEET_T = 3.0  # s: the bumper centres meet at the origin
@@ -107,6 +107,7 @@ def test_a_refused_staging_gives_way_to_the_next(monkeypatch: pytest.MonkeyPatch
         synth.synthesize_first(["first"])  # type: ignore[list-item]
 
 
+@requires_shared
 @pytest.mark.slow  # loads SUMO's Braunschweig network and replays in SUMO
 def test_t2_on_braunschweig_is_planned_as_its_replay_then_measures_it() -> None:
     from sovarc.compiler.backend import plan_site

@@ -21,7 +21,7 @@ from sovarc.targets.openscenario.schema import (
 from sovarc.targets.openscenario.validation import xodr_finding
 from sovarc.targets.openscenario.versions import VERSIONS, dialect
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 from tests.targets.openscenario.conftest import Emitter
 from tests.targets.openscenario.plans import CASES, TOWN
 
@@ -68,6 +68,7 @@ def test_a_file_that_is_not_a_map_is_an_input_error(tmp_path: Path) -> None:
         write_road_network(bogus, tmp_path / "out")
 
 
+@requires_shared
 def test_an_opendrive_map_is_copied_byte_for_byte(tmp_path: Path) -> None:
     written = write_road_network(ESMINI_MAP, tmp_path)
     assert written.name == "straight_500m.xodr"
@@ -127,6 +128,7 @@ class TestSumoNetworkConverted:
         assert "lenght" in finding.message
 
 
+@requires_shared
 @pytest.mark.parametrize("xodr", sorted(p.name for p in (SHARED / "data" / "opendrive").glob("*.xodr")))
 def test_an_opendrive_map_travels_with_the_scenario_and_validates(xodr: str, tmp_path: Path) -> None:
     plan = replace(CASES["rear_end"](), map=str(SHARED / "data" / "opendrive" / xodr))
