@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 from sovarc.compiler.geometry.bodies import Box
 from sovarc.targets.fmu.harness import Run
 from sovarc.targets.verdict import Verdict
@@ -14,6 +15,7 @@ EGO_COLOUR = "#1f77b4"
 
 
 def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
+    # matplotlib loads here, not with the module: it is slow to import and only a run's picture needs it.
     import matplotlib
 
     matplotlib.use("Agg")
@@ -57,8 +59,6 @@ def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
 
 def _frame(ax: object, run: Run) -> None:
     """Zoom onto the tracks with a margin."""
-    import numpy as np
-
     xs = np.concatenate([t.x for t in run.tracks.values()])
     ys = np.concatenate([t.y for t in run.tracks.values()])
     centre_x, centre_y = (xs.min() + xs.max()) / 2.0, (ys.min() + ys.max()) / 2.0
