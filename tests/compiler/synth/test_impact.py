@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 import sumo
 from sovarc.compiler import synth
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Trajectory
+from sovarc.compiler.plan import CAR, Impact, Network, Plan, Sample, Trajectory
 from sovarc.compiler.synth.impact import check_impact
 from sovarc.dsl import parse
 from sovarc.dsl.errors import Diagnostic, SynthesisError
@@ -67,8 +67,7 @@ def _plan(victim: tuple[Sample, ...]) -> Plan:
 
     return Plan(
         scenario=SCENARIO,
-        map="none",
-        map_sha256="0",
+        network=Network("none", "0", "none"),
         site="junction:j",
         kind=RoadKind.T_JUNCTION,
         rotation=0,
