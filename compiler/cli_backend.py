@@ -60,10 +60,7 @@ def add_target_options(parser: argparse.ArgumentParser) -> None:
     for flag in registry.all_flags():
         if flag.shared:
             continue
-        if flag.choices:
-            parser.add_argument(flag.flag, choices=flag.choices, default=flag.default, help=flag.help)
-        else:
-            parser.add_argument(flag.flag, default=flag.default, help=flag.help)
+        parser.add_argument(flag.flag, type=flag.type, choices=flag.choices, default=flag.default, help=flag.help)
 
 
 def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:

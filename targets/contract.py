@@ -21,9 +21,10 @@ command line has anyway (--seed), which the target only reads.
 
 from __future__ import annotations
 
+import builtins
 import dataclasses
 import json
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, ClassVar, Protocol, runtime_checkable
@@ -72,6 +73,7 @@ class Flag:
     choices: tuple[str, ...] | None
     default: Any
     shared: bool  # the command line defines this flag itself (e.g. --seed); the target only reads it
+    type: Callable[[str], Any]  # what makes the value from the command line's text
 
     @property
     def dest(self) -> str:
@@ -79,9 +81,20 @@ class Flag:
         return self.flag.lstrip("-").replace("-", "_")
 
 
-def option(default: Any, flag: str, help: str, choices: Sequence[str] | None = None, *, shared: bool = False) -> Any:
-    """A field of a target's Options offered on the command line as `flag`."""
-    meta = {"flag": flag, "help": help, "choices": tuple(choices) if choices else None, "shared": shared}
+def option(
+    default: Any,
+    flag: str,
+    help: str,
+    choices: Sequence[str] | None = None,
+    *,
+    shared: bool = False,
+    type: Callable[[str], Any] | None = None,
+) -> Any:
+    """A field of a target's Options offered on the command line as `flag`; its text is made a value
+    by `type` (default: int or float when the default is one, else the text itself)."""
+    if type is None:
+        type = builtins.type(default) if isinstance(default, int | float) and not isinstance(default, bool) else str
+    meta = {"flag": flag, "help": help, "choices": tuple(choices) if choices else None, "shared": shared, "type": type}
     return dataclasses.field(default=default, metadata=meta)
 
 
@@ -90,9 +103,9 @@ def flags(target: Target) -> list[Flag]:
     found = []
     for f in dataclasses.fields(target.Options):
         if "flag" in f.metadata:
-            meta = f.metadata
+            m = f.metadata
             found.append(
-                Flag(target.name, f.name, meta["flag"], meta["help"], meta["choices"], f.default, meta["shared"])
+                Flag(target.name, f.name, m["flag"], m["help"], m["choices"], f.default, m["shared"], m["type"])
             )
     return found
 
