@@ -77,12 +77,12 @@ def with_opendrive(network: Network) -> Network:
 def sumo_network(xodr: Path, sha256: str) -> Path:
     """The cached `.net.xml` netconvert makes of an OpenDRIVE file (made now if not cached yet)."""
     target = _cached(sha256, xodr.name[: -len(OPENDRIVE_SUFFIX)] + SUMO_SUFFIX)
-    if not target.is_file():
-        with tempfile.TemporaryDirectory(prefix="sovarc-net-") as tmp:
-            made = Path(tmp) / target.name
-            convert_opendrive(xodr, made)
-            write_atomic(target, made.read_bytes())
-    return target
+    if target.is_file():
+        return target
+    with tempfile.TemporaryDirectory(prefix="sovarc-net-") as tmp:
+        made = Path(tmp) / target.name
+        convert_opendrive(xodr, made)
+        return _store(target, made.read_bytes())
 
 
 def opendrive_network(net: Path, sha256: str, named: Path | None = None) -> Path:
@@ -92,9 +92,7 @@ def opendrive_network(net: Path, sha256: str, named: Path | None = None) -> Path
     name = (named or net).name
     base = name[: -len(SUMO_SUFFIX)] if name.lower().endswith(SUMO_SUFFIX) else name
     target = _cached(sha256, base + OPENDRIVE_SUFFIX)
-    if not target.is_file():
-        write_atomic(target, _to_opendrive(net, name))
-    return target
+    return target if target.is_file() else _store(target, _to_opendrive(net, name))
 
 
 def _to_opendrive(net: Path, name: str) -> bytes:
@@ -120,6 +118,16 @@ def as_opendrive_14(text: str) -> str:
 def _cached(sha256: str, name: str) -> Path:
     tool = hashlib.sha256(netconvert_version().encode("utf-8")).hexdigest()[:12]
     return cache_dir() / f"{sha256}-{tool}" / name
+
+
+def _store(target: Path, data: bytes) -> Path:
+    """Write a conversion into the cache; where the cache cannot be written, into the temp folder."""
+    try:
+        write_atomic(target, data)
+    except OSError:
+        target = Path(tempfile.gettempdir()) / "sovarc-networks" / target.parent.name / target.name
+        write_atomic(target, data)
+    return target
 
 
 def _is(source: Path, suffix: str) -> bool:
