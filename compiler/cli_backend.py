@@ -9,16 +9,16 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
-from sovarc.compiler.backend import TARGETS, compile_sites, default_map, first_message, passed, plans_for, summary
+from sovarc.compiler.backend import compile_sites, default_map, first_message, passed, plans_for, summary
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.progress import progress
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, SovarcError
 from sovarc.dsl.ir import Scenario
+from sovarc.targets import registry
 
-# The OpenSCENARIO versions the target writes (targets.openscenario.VERSIONS, which is not
-# imported here: the CLI loads a target only when it runs it); the newest is the default.
-OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
+# The OpenSCENARIO versions the target writes, as its --osc-version option declares them.
+OSC_VERSIONS: tuple[str, ...] = next(f.choices or () for f in registry.all_flags() if f.flag == "--osc-version")
 FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
 
 
@@ -46,11 +46,21 @@ def _not_negative(value: str) -> int:
 
 
 def target_names(value: str) -> tuple[str, ...]:
+    """`-t`: a registered target's name, or all of them."""
+    names = registry.names()
     if value == "all":
-        return TARGETS
-    if value not in TARGETS:
-        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(TARGETS)} or all")
+        return names
+    if value not in names:
+        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
     return (value,)
+
+
+def add_target_options(parser: argparse.ArgumentParser) -> None:
+    """Each registered target's options as flags (a shared one, like --seed, the parser has already)."""
+    for flag in registry.all_flags():
+        if flag.shared:
+            continue
+        parser.add_argument(flag.flag, type=flag.type, choices=flag.choices, default=flag.default, help=flag.help)
 
 
 def run_targets(scenario: Scenario, args: argparse.Namespace) -> int:

@@ -6,15 +6,16 @@ import argparse
 from importlib.metadata import PackageNotFoundError, version
 
 from sovarc.compiler.cli_backend import (
-    OSC_VERSIONS,
     add_lower_parser,
     add_site_options,
     add_srr_parser,
+    add_target_options,
     target_names,
 )
 from sovarc.compiler.cli_common import add_llm_options
 from sovarc.compiler.cli_eval_tests import add_tests_parser
 from sovarc.compiler.pipeline import STAGE_NAMES
+from sovarc.targets import registry
 
 try:
     __version__ = version("sovarc")
@@ -94,17 +95,11 @@ def build_parser() -> argparse.ArgumentParser:
         "--target",
         type=target_names,
         metavar="TARGET",
-        help="stage the crash on the map and emit and check: sumo, openscenario, fmu or all",
+        help=f"stage the crash on the map and emit and check: {', '.join(registry.names())} or all",
     )
     run.add_argument("-o", "--output", help="the final IR (no -t), or the output folder (with -t)")
     add_site_options(run)
-    run.add_argument("--ego", help="with -t fmu: the driving system under test, an FMI 2.0 FMU")
-    run.add_argument(
-        "--osc-version",
-        choices=OSC_VERSIONS,
-        default=OSC_VERSIONS[-1],
-        help=f"with -t openscenario: the OpenSCENARIO XML version written (default {OSC_VERSIONS[-1]})",
-    )
+    add_target_options(run)
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
     run.add_argument(
         "--dump-ir-after",

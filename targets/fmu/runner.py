@@ -8,9 +8,6 @@ but plausible ones on the same site (the paper's "Random" baseline; see baseline
 
 from __future__ import annotations
 
-import tempfile
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
@@ -58,7 +55,8 @@ def run_test_results(
     """Like run_tests, with each test's run (for pictures and measurements)."""
     ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
     results = []
-    with _net_file(plan.map) as net, Driver(ego) as driver:
+    net = Path(plan.network.sumo)  # the network the plan was planned on (an OpenDRIVE map's conversion)
+    with Driver(ego) as driver:
         for name in egos(plan):
             test_plan = plan if method == "report" else _random_plan(plan, name, seed)
             with World(net, STEP, seed) as world:
@@ -72,18 +70,3 @@ def _random_plan(plan: Plan, ego: str, seed: int) -> Plan:
     from sovarc.targets.fmu.baseline import random_npcs
 
     return random_npcs(plan, ego, seed)
-
-
-@contextmanager
-def _net_file(map_path: str) -> Iterator[Path]:
-    """The SUMO network of the plan's map (an OpenDRIVE map is converted as the map layer does)."""
-    path = Path(map_path)
-    if not path.name.lower().endswith(".xodr"):
-        yield path
-        return
-    from sovarc.compiler.maps.netconvert import convert_opendrive
-
-    with tempfile.TemporaryDirectory(prefix="sovarc-fmu-map-") as tmp:
-        net = Path(tmp) / (path.stem + ".net.xml")
-        convert_opendrive(path, net)
-        yield net

@@ -15,7 +15,7 @@ import pytest
 import sumo
 from sovarc.compiler import synth
 from sovarc.compiler.crashes import CRASH_ANGLES, planned_touch
-from sovarc.compiler.plan import Impact, Plan, Sample, Trajectory
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Trajectory
 from sovarc.compiler.synth.impact import check_impact
 from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
@@ -67,8 +67,7 @@ def _plan(victim: tuple[Sample, ...]) -> Plan:
 
     return Plan(
         scenario=SCENARIO,
-        map="none",
-        map_sha256="0",
+        network=Network("none", "0", "none"),
         site="junction:j",
         kind=RoadKind.T_JUNCTION,
         rotation=0,
