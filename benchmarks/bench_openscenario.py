@@ -35,8 +35,9 @@ sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 from sovarc.compiler.maps import load_map  # noqa: E402
 from sovarc.compiler.pipeline import Options as PipelineOptions  # noqa: E402
 from sovarc.compiler.pipeline import stage_sites  # noqa: E402
-from sovarc.compiler.plan import CAR, Plan, dump_plan, plan_from_json  # noqa: E402
+from sovarc.compiler.plan import Plan, dump_plan, plan_from_json  # noqa: E402
 from sovarc.compiler.scenario_io import load_scenario  # noqa: E402
+from sovarc.compiler.vehicles import CAR  # noqa: E402
 from sovarc.dsl.errors import SovarcError  # noqa: E402
 from sovarc.targets import sumo  # noqa: E402
 from sovarc.targets.openscenario import check, choose_ego, emit_files  # noqa: E402
@@ -176,7 +177,7 @@ CLASSES |= {f"{c} (SUMO only)": why for c, why in SUMO_ONLY.items()}
 CLASSES |= {f"{c} (OSC only)": why for c, why in OSC_ONLY.items()}
 
 
-# Known causes of faces named differently at the same first touch (SUMO's in targets/sumo/bodies.first_touch).
+# Known causes of faces named differently at the same first touch (SUMO's in compiler/geometry/bodies.first_touch).
 FACE_CAUSES = {
     "flat contact": (
         "the faces meet flat (headings within 1°): where along the touching stretch the contact lies turns on "

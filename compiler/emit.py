@@ -5,16 +5,17 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+import sovarc.targets.registry as registry
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.maps import RoadMap
+from sovarc.compiler.maps import RoadMap, with_opendrive
 from sovarc.compiler.plan import Plan, dump_plan
 from sovarc.compiler.plan_picture import draw_plan
 from sovarc.compiler.plan_text import render_plan
-
-TARGETS = ("sumo", "openscenario", "fmu")
+from sovarc.targets.contract import options_from, write_verdicts
 
 
 def write_plan_files(plan: Plan, road_map: RoadMap, folder: Path) -> None:
@@ -25,25 +26,25 @@ def write_plan_files(plan: Plan, road_map: RoadMap, folder: Path) -> None:
 
 
 def run_target(
-    target: str, plan: Plan, folder: Path, *, seed: int = 0, ego: str | None = None, osc_version: str | None = None
+    target: str,
+    plan: Plan,
+    folder: Path,
+    *,
+    seed: int = 0,
+    ego: str | None = None,
+    osc_version: str | None = None,
+    **values: Any,
 ) -> Any:
-    """Emit and check one target; `osc_version` is the OpenSCENARIO version (None: the target's default)."""
-    if target == "sumo":
-        from sovarc.targets import sumo
+    """Emit and check one registered target into `folder/<target>/`; write its verdicts beside it
+    (`folder/verdict-<target>.json`) and return them: the Verdict, or the list for a target with one per test.
 
-        sumo.emit(plan, folder / "sumo")
-        verdict = sumo.check(plan, folder / "sumo")
-        write_atomic(folder / "verdict-sumo.json", verdict.dumps())
-        return verdict
-    if target == "openscenario":
-        from sovarc.targets import openscenario
-
-        xosc = openscenario.emit(plan, folder / "openscenario", osc_version or openscenario.DEFAULT_VERSION)
-        verdict = openscenario.check(xosc, plan)
-        write_atomic(folder / "verdict-openscenario.json", verdict.dumps())
-        return verdict
-    if target == "fmu":
-        from sovarc.targets.fmu import run_target as run_fmu
-
-        return run_fmu(plan, folder / "fmu", ego_fmu=ego, seed=seed)
-    raise ValueError(f"unknown target {target!r}")
+    The keywords are command-line values by flag destination (`osc_version` is --osc-version; None:
+    the target's default). A target that reads OpenDRIVE gets the plan's network with its .xodr."""
+    chosen = registry.get(target)
+    options = options_from(chosen, {"seed": seed, "ego": ego, "osc_version": osc_version, **values})
+    if chosen.needs_opendrive:
+        plan = replace(plan, network=with_opendrive(plan.network))
+    artifacts = chosen.emit(plan, folder / chosen.name, options)
+    verdicts = chosen.check(plan, artifacts, options)
+    write_verdicts(folder, chosen, verdicts)
+    return verdicts[0] if chosen.one_verdict else verdicts

@@ -53,6 +53,7 @@ class Options:
     out_dir: Path | None = None  # emit and check write one folder per site here; None: nothing is written
     ego: str | None = None  # the fmu target's driving system under test (None: the reference ego)
     osc_version: str | None = None  # the OpenSCENARIO version written (None: the target's default)
+    target_values: dict[str, Any] = field(default_factory=dict)  # other targets' options, by flag destination
 
 
 @dataclass
@@ -201,7 +202,13 @@ def _check(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
     if result.folder is not None and result.plan is not None:
         for target in options.targets:
             result.verdicts[target] = run_target(
-                target, result.plan, result.folder, seed=options.seed, ego=options.ego, osc_version=options.osc_version
+                target,
+                result.plan,
+                result.folder,
+                seed=options.seed,
+                ego=options.ego,
+                osc_version=options.osc_version,
+                **options.target_values,
             )
     return result
 

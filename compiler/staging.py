@@ -9,6 +9,7 @@ to the next staging; all refused, the site's result carries the first refusal.
 
 from __future__ import annotations
 
+from sovarc.compiler import synth
 from sovarc.compiler.lower import stagings_on
 from sovarc.compiler.maps import RoadMap, SiteMatch
 from sovarc.compiler.plan import Plan
@@ -19,9 +20,6 @@ from sovarc.dsl.ir import Scenario
 def stage_on_site(staged: Scenario, notes: list[str], road_map: RoadMap, match: SiteMatch, *, seed: int = 0) -> Plan:
     """The plan of the first staging on the site that synthesizes and passes; else the first refusal
     (an UnsatError when lowering finds no staging at all)."""
-    # Synthesis loads TOPP-RA, SciPy and OMPL (about 1.5 s): imported when a site is first staged, so that
-    # `sovarc check`, `fmt`, `--help` and every run that stops before this stage do not wait for them.
-    from sovarc.compiler import synth
 
     first: SynthesisError | None = None
     for lowered in stagings_on(staged, match, road_map, notes):

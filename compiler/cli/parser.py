@@ -6,8 +6,8 @@ import argparse
 from importlib.metadata import PackageNotFoundError, version
 from typing import Any
 
+import sovarc.targets.registry as registry
 from sovarc.compiler.cli.common import add_llm_options
-from sovarc.compiler.emit import TARGETS
 from sovarc.compiler.pipeline import STAGE_NAMES
 
 try:
@@ -15,9 +15,8 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-# The OpenSCENARIO versions the target writes (targets.openscenario.VERSIONS, which is not
-# imported here: the compiler reaches a target only through run_target); the newest is the default.
-OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
+# The OpenSCENARIO versions the target writes, as its --osc-version option declares them.
+OSC_VERSIONS: tuple[str, ...] = next(f.choices or () for f in registry.all_flags() if f.flag == "--osc-version")
 
 DESCRIPTION = """\
 sovarc compiles a police crash report into executable driving-test scenarios.
@@ -106,17 +105,11 @@ def build_parser() -> argparse.ArgumentParser:
         "--target",
         type=target_names,
         metavar="TARGET",
-        help="stage the crash on the map and emit and check: sumo, openscenario, fmu or all",
+        help=f"stage the crash on the map and emit and check: {', '.join(registry.names())} or all",
     )
     run.add_argument("-o", "--output", help="the final IR (no -t), or the output folder (with -t)")
     add_site_options(run)
-    run.add_argument("--ego", help="with -t fmu: the driving system under test, an FMI 2.0 FMU")
-    run.add_argument(
-        "--osc-version",
-        choices=OSC_VERSIONS,
-        default=OSC_VERSIONS[-1],
-        help=f"with -t openscenario: the OpenSCENARIO XML version written (default {OSC_VERSIONS[-1]})",
-    )
+    add_target_options(run)
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
     run.add_argument(
         "--dump-ir-after",
@@ -292,11 +285,21 @@ def _positive(value: str) -> int:
 
 
 def target_names(value: str) -> tuple[str, ...]:
+    """`-t`: a registered target's name, or all of them."""
+    names = registry.names()
     if value == "all":
-        return TARGETS
-    if value not in TARGETS:
-        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(TARGETS)} or all")
+        return names
+    if value not in names:
+        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
     return (value,)
+
+
+def add_target_options(parser: argparse.ArgumentParser) -> None:
+    """Each registered target's options as flags (a shared one, like --seed, the parser has already)."""
+    for flag in registry.all_flags():
+        if flag.shared:
+            continue
+        parser.add_argument(flag.flag, type=flag.type, choices=flag.choices, default=flag.default, help=flag.help)
 
 
 def _add_lower_parser(sub: Any, summary: str, formatter: Any) -> None:

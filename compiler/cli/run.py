@@ -8,6 +8,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+import sovarc.targets.registry as registry
 from sovarc.compiler.cli.common import front_end_options
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import PIPELINE, STAGE_NAMES, Options, Sites, Slots, Stage, entry_stage, run_pipeline
@@ -34,6 +35,11 @@ def cmd_run(args: argparse.Namespace) -> int:
         targets=args.target or (),
         ego=args.ego,
         osc_version=args.osc_version,
+        target_values={
+            f.dest: getattr(args, f.dest)
+            for f in registry.all_flags()
+            if not f.shared and f.dest not in ("ego", "osc_version")
+        },
     )
 
     def after(stage: Stage, value: Any) -> None:

@@ -7,21 +7,21 @@ straight road, a random lane of a random direction from a random point. A pedest
 site's centre in a random direction. Nothing depends on the crash the report describes.
 
 The NPCs are drawn here, on the map the plan was staged on; the FMU target runs the plans it is given
-(`run_test_results(plan, tests=random_tests(plan, road_map, seed), method="random")`).
+(`run_test_results(plan, tests=random_tests(plan, road_map, seed, egos(plan)), method="random")`).
 """
 
 from __future__ import annotations
 
 import math
 import random
+from collections.abc import Iterable
 from dataclasses import replace
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point, Polyline
+from sovarc.compiler.geometry.polyline import Point, Polyline
 from sovarc.compiler.maps import RoadMap, Site, find_sites
 from sovarc.compiler.plan import Plan, Sample, Segment, Trajectory
 from sovarc.dsl.errors import OracleError
-from sovarc.targets.fmu import egos
 from sumolib.net import Net
 
 SPEED_RANGE = (0.5, 1.0)  # share of the lane's speed limit an NPC drives at
@@ -31,9 +31,9 @@ TRIES = 30
 PATH_GAP = 0.05  # m: an NPC's path drops each point this near the last one it kept (as the FMU target's routes)
 
 
-def random_tests(plan: Plan, road_map: RoadMap, seed: int) -> dict[str, Plan]:
-    """For each participant that takes a turn as the FMU's ego, the plan of its random test."""
-    return {ego: random_npcs(plan, road_map, ego, seed) for ego in egos(plan)}
+def random_tests(plan: Plan, road_map: RoadMap, seed: int, egos: Iterable[str]) -> dict[str, Plan]:
+    """For each participant that takes a turn as the ego, the plan of its random test."""
+    return {ego: random_npcs(plan, road_map, ego, seed) for ego in egos}
 
 
 def random_npcs(plan: Plan, road_map: RoadMap, ego: str, seed: int) -> Plan:

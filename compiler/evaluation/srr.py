@@ -8,16 +8,19 @@ crossing (and replay error, when SUMO refused the scenario).
 
 from __future__ import annotations
 
+import tempfile
 from collections import Counter
 from pathlib import Path
 from typing import Any
 
+import sovarc.targets.registry as registry
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.pipeline import Options, stage_sites
+from sovarc.compiler.plan import Plan
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import Scenario
-from sovarc.targets import sumo  # the in-memory replay (no files); through targets.registry once it lands
+from sovarc.targets.verdict import Verdict
 
 FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
 
@@ -54,7 +57,7 @@ def reconstruct(
             rows.append(_row(path, kind, r.site, "planning failed", first_message(r.error)))
         else:
             try:
-                verdict = sumo.check(r.plan)
+                verdict = replay(r.plan)
                 failure = classify(verdict)
                 rows.append(_row(path, kind, r.site, failure, "; ".join(f.message for f in verdict.failures)))
             except SovarcError as error:  # SUMO refused the scenario: counted, and the batch goes on
@@ -63,6 +66,15 @@ def reconstruct(
     missing = roads - len(results)
     rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
     return rows
+
+
+def replay(plan: Plan) -> Verdict:
+    """The SUMO target's verdict on the plan, its files emitted to a folder of their own and thrown away."""
+    sumo = registry.get("sumo")
+    options = sumo.Options()
+    with tempfile.TemporaryDirectory(prefix="sovarc-srr-") as tmp:
+        [verdict] = sumo.check(plan, sumo.emit(plan, Path(tmp), options), options)
+    return verdict
 
 
 def map_key(map_path: str, maps: list[str]) -> str:

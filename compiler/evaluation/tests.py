@@ -25,7 +25,7 @@ from sovarc.compiler.progress import progress
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import InputError, SovarcError, SynthesisError, UnsatError
 from sovarc.dsl.ir import RoadKind, Scenario
-from sovarc.targets.fmu import EgoFmu, reference_fmu, run_test_results, validate_fmu, write_results
+from sovarc.targets.fmu import EgoFmu, egos, reference_fmu, run_test_results, validate_fmu, write_results
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
 from sovarc.targets.fmu.runner import Method
 from sovarc.targets.verdict import Verdict
@@ -99,7 +99,7 @@ class TestsTable:
         out_dir, write each test's verdict there, and a picture of each failed one."""
         self.planned[plan.kind.value] += 1
         for method in METHODS if baseline else METHODS[:1]:
-            tests = random_tests(plan, road_map, seed) if method == "random" else None
+            tests = random_tests(plan, road_map, seed, egos(plan)) if method == "random" else None
             results = run_test_results(plan, ego, seed, method=method, tests=tests)
             for result in results:
                 self.add(plan.kind.value, method, result.verdict)

@@ -22,13 +22,12 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from sovarc.compiler.maps.geometry import (
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.polyline import (
     Point,
     Shape,
-    angle_diff,
     distances_to,
     end_heading,
-    fit_frame,
     heading_between,
     max_kink,
     max_offset_from_chord,
@@ -36,6 +35,7 @@ from sovarc.compiler.maps.geometry import (
     shape_length,
     start_heading,
 )
+from sovarc.compiler.maps.geometry import fit_frame
 from sovarc.dsl.ir import RoadKind
 
 if TYPE_CHECKING:

@@ -48,8 +48,7 @@ def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
     point = _point_at(striker, impact_time)
     plan = Plan(
         scenario=lowered.scenario,
-        map=str(lowered.road_map.path),
-        map_sha256=lowered.road_map.sha256,
+        network=lowered.road_map.network,
         site=lowered.match.site.id,
         kind=lowered.match.site.kind,
         rotation=lowered.match.rotation,

@@ -9,9 +9,7 @@ with `method="random"`.
 
 from __future__ import annotations
 
-import tempfile
-from collections.abc import Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
@@ -65,7 +63,8 @@ def run_test_results(
     plan its test runs (default: `plan` for every ego)."""
     ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
     results = []
-    with _net_file(plan.map) as net, Driver(ego) as driver:
+    net = Path(plan.network.sumo)  # the network the plan was planned on (an OpenDRIVE map's conversion)
+    with Driver(ego) as driver:
         for name in egos(plan):
             test_plan = plan if tests is None else tests[name]
             with World(net, STEP, seed) as world:
@@ -73,18 +72,3 @@ def run_test_results(
             verdict = judge(run, test_plan, seed=seed, fmu=ego.model_name, method=method)
             results.append(TestResult(verdict, run, test_plan))
     return results
-
-
-@contextmanager
-def _net_file(map_path: str) -> Iterator[Path]:
-    """The SUMO network of the plan's map (an OpenDRIVE map is converted as the map layer does)."""
-    path = Path(map_path)
-    if not path.name.lower().endswith(".xodr"):
-        yield path
-        return
-    from sovarc.compiler.maps.netconvert import convert_opendrive
-
-    with tempfile.TemporaryDirectory(prefix="sovarc-fmu-map-") as tmp:
-        net = Path(tmp) / (path.stem + ".net.xml")
-        convert_opendrive(path, net)
-        yield net

@@ -7,9 +7,9 @@ from dataclasses import replace
 import pytest
 import sumolib
 from sovarc.compiler.evaluation.baseline import random_npcs, random_tests
-from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.maps import RoadMap
-from sovarc.targets.fmu import EgoFmu, run_test_results
+from sovarc.targets.fmu import EgoFmu, egos, run_test_results
 
 from tests.targets.fmu.plans import TOWN, crossing, cut_in
 
@@ -63,7 +63,7 @@ def test_npcs_drive_the_sites_lanes_and_the_ego_keeps_its_task(make, net, town: 
 def test_the_fmu_target_runs_the_random_plans_it_is_given(reference: EgoFmu, town: RoadMap) -> None:
     plan = crossing()
     report = run_test_results(plan, reference, seed=1)
-    random = run_test_results(plan, reference, seed=1, method="random", tests=random_tests(plan, town, 1))
+    random = run_test_results(plan, reference, seed=1, method="random", tests=random_tests(plan, town, 1, egos(plan)))
     assert [r.run.ego for r in random] == [r.run.ego for r in report]
     for a, b in zip(report, random, strict=True):
         assert a.plan.trajectory(a.run.ego) == b.plan.trajectory(b.run.ego)  # the ego's task is unchanged

@@ -13,15 +13,15 @@ from pathlib import Path
 
 import pytest
 import sumo
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Trajectory
+from sovarc.compiler.crashes import CRASH_ANGLES, planned_touch
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Trajectory
 from sovarc.compiler.synth.impact import check_impact
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SynthesisError
 from sovarc.dsl.ir import CrashType, RoadKind, Role
-from sovarc.targets.sumo.impact import planned_touch
-from sovarc.targets.verdict import CRASH_ANGLES
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 FRONTAL = CRASH_ANGLES["frontal"][0]
 MEET_T = 3.0  # s: the bumper centres meet at the origin
@@ -66,8 +66,7 @@ def _plan(victim: tuple[Sample, ...]) -> Plan:
 
     return Plan(
         scenario=SCENARIO,
-        map="none",
-        map_sha256="0",
+        network=Network("none", "0", "none"),
         site="junction:j",
         kind=RoadKind.T_JUNCTION,
         rotation=0,
@@ -94,6 +93,7 @@ def test_a_crossing_of_straight_paths_at_100_degrees_is_frontal() -> None:
     check_impact(_plan(_straight(79.5, 4.0)))
 
 
+@requires_shared
 @pytest.mark.slow  # loads SUMO's Braunschweig network and replays in SUMO
 def test_t2_on_braunschweig_is_planned_as_its_replay_then_measures_it() -> None:
     from sovarc.compiler.frontend.truth import import_truth_file

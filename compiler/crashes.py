@@ -1,31 +1,45 @@
-"""The striker's and victim's first touch, as the SUMO oracle measures it, and whether it is the crash.
+"""THE crash definitions, for lowering, synthesis and every oracle: the angle between the headings
+each crash type allows, the faces it names, the lane-line tolerance, and the first touch of a
+plan's striker and victim read from its samples.
 
-One measurement for two users: the oracle applies it to the poses SUMO had the bodies in at
-each step of the replay, and synthesis (compiler/synth/impact.py) to the plan's own samples,
-which the replay puts SUMO's bodies on. So a plan synthesis accepts is one the oracle sees the
-same way, not one whose lane lines met at the right angle while its bodies touch at another.
+One measurement for all its users: the SUMO oracle applies `touch` to the poses SUMO had the
+bodies in at each step of the replay, and synthesis (compiler/synth/impact.py) `planned_touch`
+to the plan's own samples, which the replay puts SUMO's bodies on. So a plan synthesis accepts is
+one the oracle sees the same way, not one whose lane lines met at the right angle while its
+bodies touch at another.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from sovarc.compiler.plan import Plan, Trajectory
+from sovarc.compiler.geometry.bodies import Box, Contact, first_touch, overlap
+from sovarc.compiler.plan import Plan
 from sovarc.dsl.ir import CrashType
-from sovarc.targets.sumo.bodies import Body, Contact, first_touch, overlap
-from sovarc.targets.verdict import CRASH_ANGLES
 
+# Degrees between the headings at first touch that each crash type allows, for every oracle.
+# Frontal is front into front with the two approaching each other: head-on, or a car turning
+# across an oncoming one (crash databases, and the ground truth, code that front-to-front). A
+# front corner touching a crossing car at right angles is not frontal: that is a side crash.
+CRASH_ANGLES: dict[str, tuple[float, float]] = {
+    "rear_end": (0.0, 45.0),
+    "frontal": (100.0, 180.0),
+    "side": (0.0, 180.0),
+}
 REAR_END_MAX_ANGLE = CRASH_ANGLES["rear_end"][1]
 FRONTAL_MIN_ANGLE = CRASH_ANGLES["frontal"][0]
-VICTIM_FACES = {CrashType.REAR_END: ("rear",), CrashType.FRONTAL: ("front",), CrashType.SIDE: ("left", "right")}
+# The victim's faces the striker's front must meet, per crash type.
+VICTIM_FACES: dict[CrashType, tuple[str, ...]] = {
+    CrashType.REAR_END: ("rear",),
+    CrashType.FRONTAL: ("front",),
+    CrashType.SIDE: ("left", "right"),
+}
+# m a body may reach over a lane line before it counts as crossing it: the SUMO oracle's bound,
+# which lowering (compiler/lower/swing.py, kturn.py) plans inside.
+LINE_TOLERANCE = 0.25
 
 
-def body_at(t: Trajectory, x: float, y: float, heading: float) -> Body:
-    """The participant's body with its reference point (front bumper, or a walker's centre) at (x, y)."""
-    return Body(x, y, heading, t.body.length, t.body.width, t.body.vclass != "pedestrian")
-
-
-def first_overlap(a: Sequence[Body | None], b: Sequence[Body | None]) -> int | None:
+def first_overlap(a: Sequence[Box | None], b: Sequence[Box | None]) -> int | None:
     """The first step at which both bodies are present and overlap."""
     for k, (p, q) in enumerate(zip(a, b, strict=True)):
         if p is not None and q is not None and overlap(p, q):
@@ -33,7 +47,7 @@ def first_overlap(a: Sequence[Body | None], b: Sequence[Body | None]) -> int | N
     return None
 
 
-def touch(times: Sequence[float], a: Sequence[Body | None], b: Sequence[Body | None]) -> Contact | None:
+def touch(times: Sequence[float], a: Sequence[Box | None], b: Sequence[Box | None]) -> Contact | None:
     """Where bodies a and b, sampled at `times`, first touch: between the step before they first
     overlap and that step, each body moving straight between its two poses (None: they never do)."""
     k = first_overlap(a, b)
@@ -52,8 +66,8 @@ def planned_touch(plan: Plan) -> Contact | None:
     SUMO's poses: the replay moves each body onto its sample at every step of the plan's own length."""
     striker, victim = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
     times = [s.t for s in striker.samples]
-    a = [body_at(striker, s.x, s.y, s.heading) for s in striker.samples]
-    b = [body_at(victim, s.x, s.y, s.heading) for s in victim.samples]
+    a = [Box.of(striker.body, s.x, s.y, s.heading) for s in striker.samples]
+    b = [Box.of(victim.body, s.x, s.y, s.heading) for s in victim.samples]
     return touch(times, a, b)
 
 

@@ -1,11 +1,11 @@
-"""The lowering's polyline: many-point distances agree with one-point projection."""
+"""The kernel's polyline: many-point distances agree with one-point projection."""
 
 from __future__ import annotations
 
 import numpy as np
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.geometry.polyline import Polyline
 
 coordinate = st.floats(-200.0, 200.0, allow_nan=False)
 point = st.tuples(coordinate, coordinate)

@@ -1,12 +1,14 @@
-"""What each crash type accepts at the first touch: faces and the angle between headings."""
+"""What each crash type accepts at the first touch (compiler/crashes.py): faces and the angle between
+headings, as synthesis and the SUMO oracle both judge it."""
 
 from __future__ import annotations
 
 from dataclasses import replace
 
 import pytest
+from sovarc.compiler.crashes import fits
+from sovarc.compiler.geometry.bodies import Contact
 from sovarc.dsl.ir import CrashType
-from sovarc.targets.sumo.bodies import Contact
 from sovarc.targets.sumo.oracle import _angle_finding
 
 from tests.targets.sumo.plans import SCENES
@@ -16,7 +18,9 @@ def _verdict(kind: CrashType, striker_zone: tuple[str, ...], victim_zone: tuple[
     plan = SCENES["head_on"]()
     plan = replace(plan, impact=replace(plan.impact, type=kind))
     contact = Contact(3.0, (0.0, 0.0), ("front", "front"), (striker_zone, victim_zone), angle)
-    return _angle_finding(plan, contact).passed
+    passed = _angle_finding(plan, contact).passed
+    assert fits(kind, contact) is passed  # the SUMO oracle judges by the crash definitions, as synthesis does
+    return passed
 
 
 @pytest.mark.parametrize(

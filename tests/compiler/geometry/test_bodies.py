@@ -1,25 +1,22 @@
-"""Bodies, contacts and lane look-ups of the SUMO oracle, on plain geometry."""
+"""The kernel's body boxes and their first touch, on plain geometry (every oracle uses them)."""
 
 from __future__ import annotations
 
 import math
 
 import pytest
+from sovarc.compiler.geometry.bodies import Box, Contact, first_touch, overlap
 from sovarc.targets.openscenario.kinematics import faces_at
 from sovarc.targets.openscenario.readback import Entity, Pose
-from sovarc.targets.sumo.bodies import Body, Contact, first_touch, overlap
-from sovarc.targets.sumo.network import read_network
-
-from tests.targets.sumo.plans import TOWN
 
 
-def car(x: float, y: float, heading: float) -> Body:
-    return Body(x, y, heading, 4.6, 1.8, front_ref=True)
+def car(x: float, y: float, heading: float) -> Box:
+    return Box(x, y, heading, 4.6, 1.8, front_ref=True)
 
 
 def test_front_reference_puts_the_body_behind_the_point() -> None:
     assert car(0.0, 0.0, 90.0).centre == pytest.approx((-2.3, 0.0))
-    assert Body(0.0, 0.0, 90.0, 0.5, 0.6, front_ref=False).centre == (0.0, 0.0)
+    assert Box(0.0, 0.0, 90.0, 0.5, 0.6, front_ref=False).centre == (0.0, 0.0)
 
 
 def test_overlap_needs_shared_area() -> None:
@@ -40,7 +37,7 @@ def test_overlap_needs_shared_area() -> None:
     ],
 )
 def test_first_touch_names_faces_and_angle(
-    striker_end: Body, victim_end: Body, faces: tuple[tuple[str, ...], tuple[str, ...]], angle: float
+    striker_end: Box, victim_end: Box, faces: tuple[tuple[str, ...], tuple[str, ...]], angle: float
 ) -> None:
     back = {0.0: (0.0, -3.0), 90.0: (-3.0, 0.0), 270.0: (3.0, 0.0)}
     dx, dy = back[striker_end.heading]
@@ -60,7 +57,7 @@ def test_a_corner_hit_names_both_faces_of_the_corner() -> None:
     assert contact.zones == (("front", "left"), ("right",))
 
 
-def side_swipe(heading: float, behind: float) -> tuple[Contact, Body, Body]:
+def side_swipe(heading: float, behind: float) -> tuple[Contact, Box, Box]:
     """A northbound victim with its centre at the origin, and a striker on its right driving
     forward at `heading` (compass, west of north) whose front-left corner first meets the victim's
     right side `behind` metres behind its middle: the contact, and both bodies at the touch."""
@@ -83,7 +80,7 @@ def test_a_corner_beside_and_behind_the_victim_meets_its_side() -> None:
     assert contact.zones == (("front", "left"), ("right",))
 
 
-def osc_faces(body: Body, point: tuple[float, float]) -> tuple[str, ...]:
+def osc_faces(body: Box, point: tuple[float, float]) -> tuple[str, ...]:
     """The OpenSCENARIO oracle's faces of `body` at `point` (its pose at the body centre)."""
     entity = Entity("x", False, body.length, body.width, 0.0, 0.0, None, None, None, {})
     return faces_at(entity, Pose(0.0, *body.centre, math.radians(90.0 - body.heading)), point)
@@ -98,15 +95,3 @@ def test_first_touch_names_the_faces_the_openscenario_oracle_does(heading: float
     assert contact.zones[0] == ("front", "left")
     assert "right" in contact.zones[1]
     assert ("rear" in contact.zones[1]) == (behind >= 4.6 / 4.0)
-
-
-def test_locate_prefers_the_participants_own_junction_lane() -> None:
-    network = read_network(TOWN)
-    # inside x_oak, where the northbound straight lane crosses the eastbound lane 2
-    point = (401.7, -5.9)
-    own = network.locate(*point, 0.0, frozenset({":x_oak_12_0"}))
-    assert own.lane.id == ":x_oak_12_0"
-    assert network.locate(*point, 90.0, frozenset({":x_oak_16_1"})).lane.id == ":x_oak_16_1"
-    assert network.locate(4.5, -150.0, 0.0, frozenset()).lane.id == "main1_1"  # a car
-    assert network.locate(7.0, -150.0, 0.0, frozenset()).lane.id == "main1_1"  # never on the sidewalk
-    assert network.locate(7.0, -150.0, 0.0, frozenset(), pedestrian=True).lane.id == "main1_0"

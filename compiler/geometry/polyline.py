@@ -1,6 +1,7 @@
-"""Polylines with arc length: the geometry routes, contact search and synthesis share.
+"""Polylines with arc length (the geometry routes, contact search, synthesis and the oracles
+share), and helpers on plain shapes (sequences of points, as maps give lane shapes).
 
-Headings are compass degrees (0 = north, clockwise), as everywhere in sovarc.
+Headings are compass degrees (0 = north, clockwise), as everywhere in sovarc (angles.py).
 """
 
 from __future__ import annotations
@@ -10,9 +11,14 @@ import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
-from sovarc.compiler.maps.geometry import angle_diffs, distances_to
+from sovarc.compiler.geometry.angles import angle_diff, angle_diffs, compass, heading_vector
 
 Point = tuple[float, float]
+Shape = tuple[Point, ...]
+
+# How far along a lane its direction at a junction is measured: long enough to skip
+# the rounded corner netconvert adds, short enough for a curved road.
+TAIL_M = 20.0
 
 
 class Polyline:
@@ -206,7 +212,7 @@ def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16, reach:
     the chord); a U-turn, whose ends are close together, needs it longer to be round.
     """
     reach = math.dist(p0, p1) / 3.0 if reach is None else reach
-    d0, d1 = unit(h0), unit(h1)
+    d0, d1 = heading_vector(h0), heading_vector(h1)
     c0 = (p0[0] + reach * d0[0], p0[1] + reach * d0[1])
     c1 = (p1[0] - reach * d1[0], p1[1] - reach * d1[1])
     u = np.linspace(0.0, 1.0, samples)[:, None]
@@ -217,12 +223,6 @@ def bezier(p0: Point, h0: float, p1: Point, h1: float, samples: int = 16, reach:
         + u**3 * np.asarray(p1)
     )
     return Polyline(pts)
-
-
-def unit(heading: float) -> Point:
-    """The unit vector of a compass heading."""
-    rad = math.radians(heading)
-    return (math.sin(rad), math.cos(rad))
 
 
 def _spaced(points: np.ndarray, gap: float) -> list[int]:
@@ -242,3 +242,60 @@ def _vertex_normals(points: np.ndarray) -> np.ndarray:
     right = np.column_stack((d[:, 1], -d[:, 0]))
     normals = np.vstack([right[:1], (right[:-1] + right[1:]) / 2.0, right[-1:]])
     return normals / np.maximum(np.hypot(*normals.T), 1e-12)[:, None]
+
+
+def shape_length(shape: Sequence[Point]) -> float:
+    return sum(math.dist(p, q) for p, q in itertools.pairwise(shape))
+
+
+def point_at(shape: Sequence[Point], s: float) -> Point:
+    """The point at distance `s` along the polyline (clamped to its ends)."""
+    if s <= 0.0:
+        return shape[0]
+    for p, q in itertools.pairwise(shape):
+        step = math.dist(p, q)
+        if step > 0.0 and s <= step:
+            t = s / step
+            return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
+        s -= step
+    return shape[-1]
+
+
+def distances_to(shape: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """For each of `points` (n x 2), its shortest distance to the polyline `shape` (m x 2)."""
+    a, ab = shape[:-1], shape[1:] - shape[:-1]
+    lengths2 = np.maximum((ab**2).sum(axis=1), 1e-12)
+    rel = points[:, None, :] - a[None, :, :]  # n x segments x 2
+    u = np.clip((rel * ab[None, :, :]).sum(axis=2) / lengths2, 0.0, 1.0)
+    gap = rel - ab[None, :, :] * u[:, :, None]
+    return np.hypot(gap[:, :, 0], gap[:, :, 1]).min(axis=1)
+
+
+def heading_between(p: Point, q: Point) -> float:
+    return compass(q[0] - p[0], q[1] - p[1])
+
+
+def end_heading(shape: Sequence[Point], tail: float = TAIL_M) -> float:
+    """Direction of travel over the last `tail` metres of a polyline."""
+    length = shape_length(shape)
+    return heading_between(point_at(shape, max(0.0, length - tail)), shape[-1])
+
+
+def start_heading(shape: Sequence[Point], tail: float = TAIL_M) -> float:
+    """Direction of travel over the first `tail` metres of a polyline."""
+    return heading_between(shape[0], point_at(shape, tail))
+
+
+def max_offset_from_chord(shape: Sequence[Point]) -> float:
+    """The largest distance of a shape point from the straight line through its ends."""
+    (x0, y0), (x1, y1) = shape[0], shape[-1]
+    chord = math.hypot(x1 - x0, y1 - y0)
+    if chord == 0.0:
+        return max((math.dist(shape[0], p) for p in shape), default=0.0)
+    return max(abs((x1 - x0) * (y0 - y) - (x0 - x) * (y1 - y0)) / chord for x, y in shape)
+
+
+def max_kink(shape: Sequence[Point]) -> float:
+    """The sharpest change of direction between two successive segments, in degrees."""
+    steps = [heading_between(p, q) for p, q in itertools.pairwise(shape) if math.dist(p, q) > 1e-6]
+    return max((abs(angle_diff(b, a)) for a, b in itertools.pairwise(steps)), default=0.0)

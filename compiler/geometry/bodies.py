@@ -1,7 +1,11 @@
-"""Participants' bodies as rectangles, and where two of them first touch.
+"""Participants' bodies as oriented boxes: corners, overlap, and where two of them first touch.
 
-A vehicle's reference point is its front-bumper centre, a pedestrian's its body centre
-(the plan's convention, and SUMO's for vehicles). Headings are compass degrees.
+ONE touching rule for lowering, synthesis and every oracle: bodies overlap only when they share
+area; touching (sharing an edge or a corner, or closer than OVERLAP_EPS) is not overlapping.
+
+A box's reference point is a vehicle's front-bumper centre or a pedestrian's body centre (the
+plan's convention, and SUMO's for vehicles; `front_ref` says which), or the box centre for a
+target that places bodies by it. Headings are compass degrees (angles.py).
 """
 
 from __future__ import annotations
@@ -10,18 +14,28 @@ import itertools
 import math
 from dataclasses import dataclass
 
+import numpy as np
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.vehicles import Body
+
 Point = tuple[float, float]
 FACES = ("front", "rear", "left", "right")
+OVERLAP_EPS = 1e-9  # m: boxes must reach this far into each other to overlap (rounding is not contact)
 
 
 @dataclass(frozen=True)
-class Body:
+class Box:
     x: float
     y: float
     heading: float  # compass degrees
     length: float
     width: float
     front_ref: bool  # True: (x, y) is the front-bumper centre; False: the body centre
+
+    @classmethod
+    def of(cls, body: Body, x: float, y: float, heading: float) -> Box:
+        """A participant's body with its reference point (front bumper, or a walker's centre) at (x, y)."""
+        return cls(x, y, heading, body.length, body.width, body.front_ref)
 
     @property
     def axes(self) -> tuple[Point, Point]:
@@ -70,18 +84,37 @@ class Body:
         return max(FACES, key=lambda face: scores[face])
 
 
+def corner_array(poses: np.ndarray, length: float, width: float, shrink: float = 0.0) -> np.ndarray:
+    """`Box.corners` of many front-referenced boxes at once: poses n x 3 (front x, y, compass
+    heading) give 4n x 2 corners, the front-left ones first, then rear-left, rear-right, front-right."""
+    rad = np.radians(poses[:, 2])
+    fx, fy = np.sin(rad), np.cos(rad)
+    lx, ly = -fy, fx
+    cx, cy = poses[:, 0] - fx * length / 2.0, poses[:, 1] - fy * length / 2.0
+    hl, hw = max(length / 2.0 - shrink, 0.0), max(width / 2.0 - shrink, 0.0)
+    return np.vstack(
+        [
+            np.column_stack((cx + a * hl * fx + b * hw * lx, cy + a * hl * fy + b * hw * ly))
+            for a, b in ((1, 1), (-1, 1), (-1, -1), (1, -1))
+        ]
+    )
+
+
 def _corner(primary: str, face: str) -> bool:
     """Whether two faces meet at a corner (front/rear with left/right)."""
     return {primary, face} in ({"front", "left"}, {"front", "right"}, {"rear", "left"}, {"rear", "right"})
 
 
-def overlap(a: Body, b: Body) -> bool:
-    """Whether the two rectangles share area (separating axis test); touching is not overlapping."""
-    return _separation(a, b)[0] < -1e-9
+def overlap(a: Box, b: Box) -> bool:
+    """Whether the two boxes share area (separating axis test); touching is not overlapping."""
+    (ax, ay), (bx, by) = a.centre, b.centre
+    if math.hypot(ax - bx, ay - by) > (math.hypot(a.length, a.width) + math.hypot(b.length, b.width)) / 2.0:
+        return False  # their enclosing circles are apart: no axis needs testing
+    return separation(a, b)[0] < -OVERLAP_EPS
 
 
-def _separation(a: Body, b: Body) -> tuple[float, Point]:
-    """The widest gap between the rectangles along any face normal of either (negative: the least
+def separation(a: Box, b: Box) -> tuple[float, Point]:
+    """The widest gap between the boxes along any face normal of either (negative: the least
     they overlap by), and that normal pointing from a towards b. Where two bodies just touch, it is
     the normal of the face that is touched: the direction the contact pushes in."""
     pa, pb = a.corners(), b.corners()
@@ -104,12 +137,12 @@ def _closest_on_segment(p: Point, a: Point, b: Point) -> Point:
     return (a[0] + u * dx, a[1] + u * dy)
 
 
-def closest_points(a: Body, b: Body) -> tuple[Point, Point]:
-    """The nearest pair of points of two separate rectangles' outlines (on a, on b)."""
+def closest_points(a: Box, b: Box) -> tuple[Point, Point]:
+    """The nearest pair of points of two separate boxes' outlines (on a, on b)."""
     return _near_pairs(a, b)[0]
 
 
-def _near_pairs(a: Body, b: Body, slack: float = 1e-3) -> list[tuple[Point, Point]]:
+def _near_pairs(a: Box, b: Box, slack: float = 1e-3) -> list[tuple[Point, Point]]:
     """Pairs of outline points (on a, on b) within `slack` of the smallest distance, nearest first:
     two faces that meet flat give a pair at each end of the contact, a corner gives one."""
     pa, pb = a.corners(), b.corners()
@@ -124,10 +157,10 @@ def _near_pairs(a: Body, b: Body, slack: float = 1e-3) -> list[tuple[Point, Poin
     return [(p, q) for d, p, q in pairs if d <= least + slack]
 
 
-def between(a: Body, b: Body, u: float) -> Body:
-    """The body a fraction u of the way from pose a to pose b."""
+def between(a: Box, b: Box, u: float) -> Box:
+    """The box a fraction u of the way from pose a to pose b (turning the shorter way)."""
     turn = ((b.heading - a.heading + 180.0) % 360.0) - 180.0
-    return Body(
+    return Box(
         a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.heading + u * turn) % 360.0, a.length, a.width, a.front_ref
     )
 
@@ -143,7 +176,7 @@ class Contact:
     angle: float  # degrees between their headings, 0..180
 
 
-def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]) -> Contact:
+def first_touch(t0: float, t1: float, a: tuple[Box, Box], b: tuple[Box, Box]) -> Contact:
     """The contact of bodies a and b between time t0 (apart) and t1 (overlapping), with the
     poses at both times; found by bisection on straight-line motion between them.
 
@@ -169,9 +202,9 @@ def first_touch(t0: float, t1: float, a: tuple[Body, Body], b: tuple[Body, Body]
         direction = (bx - ax, by - ay)
     else:  # apart by under a nanometre: the nearest points coincide, the axis that still separates them does not
         near = _near_pairs(body_a, body_b)
-        direction = _separation(body_a, body_b)[1]
+        direction = separation(body_a, body_b)[1]
     faces = (body_a.face_towards(direction), body_b.face_towards((-direction[0], -direction[1])))
-    angle = abs(((body_a.heading - body_b.heading + 180.0) % 360.0) - 180.0)
+    angle = abs(angle_diff(body_a.heading, body_b.heading))
     points = [((p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0) for p, q in near]
     point = (sum(p[0] for p in points) / len(points), sum(p[1] for p in points) / len(points))
     zones = (body_a.faces_at(point, faces[0]), body_b.faces_at(point, faces[1]))
