@@ -6,9 +6,8 @@ oracle judges each run. The ego interface (names, units, frames, step) is in INT
 
     verdicts = run_tests(plan)                            # the reference ego, one Verdict per vehicle
     verdicts = run_tests(plan, "my_ads.fmu", seed=0)      # a user's FMU, validated first
-    verdicts = run_tests(plan, method="random")           # the same ego tasks among random NPCs
+    run_test_results(plan, tests=plans, method="random")  # each ego's test on the plan given for it
     run_target(plan, "out/")                              # the same, writing verdict JSON and a PNG per test
-    print(evaluate_tests(plans).render())                 # report-derived vs random failures (Table 6 form)
     validate_fmu("my_ads.fmu")                            # FmuInterfaceError lists every mismatch
     reference_fmu()                                       # path of the reference ego FMU (built once, cached)
     TARGET                                                # the target contract's object: one verdict per ego
@@ -24,8 +23,6 @@ from typing import ClassVar
 
 from sovarc.compiler.plan import Plan
 from sovarc.targets.contract import Artifacts, option
-from sovarc.targets.fmu.baseline import random_npcs
-from sovarc.targets.fmu.evaluation import TestsTable, evaluate_tests
 from sovarc.targets.fmu.interface import STEP, EgoFmu, FmuInterfaceError, validate_fmu
 from sovarc.targets.fmu.output import run_target, write_results
 from sovarc.targets.fmu.reference import reference_fmu
@@ -68,10 +65,7 @@ __all__ = [
     "FmuOptions",
     "FmuTarget",
     "TestResult",
-    "TestsTable",
     "egos",
-    "evaluate_tests",
-    "random_npcs",
     "reference_fmu",
     "run_target",
     "run_test_results",

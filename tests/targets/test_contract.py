@@ -12,16 +12,15 @@ from pathlib import Path
 from typing import ClassVar
 
 import pytest
-from sovarc.compiler import backend
+from sovarc.compiler import emit
 from sovarc.compiler.cli import main
-from sovarc.compiler.cli_backend import target_names
-from sovarc.compiler.cli_parser import build_parser
+from sovarc.compiler.cli.parser import build_parser, target_names
 from sovarc.compiler.plan import Plan
 from sovarc.targets import registry
 from sovarc.targets.contract import Artifacts, Target, flags, option, options_from, write_verdicts
 from sovarc.targets.verdict import Finding, Verdict
 
-from tests.compiler.test_cli import LEFT_TURN
+from tests.compiler.cli.test_cli import LEFT_TURN
 from tests.targets.fmu.plans import car_following
 
 
@@ -101,7 +100,7 @@ def test_an_unknown_target_or_one_off_contract_is_refused() -> None:
 
 def test_a_fourth_target_runs_through_the_compilers_path(csv_target: CsvTarget, tmp_path: Path) -> None:
     plan = car_following()
-    verdict = backend.run_target("csv", plan, tmp_path, csv_every=5)
+    verdict = emit.run_target("csv", plan, tmp_path, csv_every=5)
     assert isinstance(verdict, Verdict) and verdict.passed
     rows = (tmp_path / "csv" / "trajectories.csv").read_text(encoding="utf-8").splitlines()
     assert len(rows) == 1 + sum(len(t.samples[::5]) for t in plan.trajectories)

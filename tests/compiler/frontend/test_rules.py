@@ -19,7 +19,7 @@ from sovarc.compiler.frontend.text import normalize_names, sentences, up_to_firs
 from sovarc.dsl import UNKNOWN, parse, to_text, verify
 from sovarc.dsl.span import Source
 
-from tests.compiler.test_cli import sovarc
+from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import EXAMPLES, SHARED, requires_shared
 
 REPORTS = sorted((EXAMPLES / "reports").glob("*.txt"))

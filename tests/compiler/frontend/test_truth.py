@@ -10,7 +10,7 @@ from sovarc.compiler.frontend.truth import import_truth, import_truth_file
 from sovarc.dsl import ParseError, parse, to_text, verify
 from sovarc.dsl.ir import Speed, SpeedUnit
 
-from tests.compiler.test_cli import sovarc
+from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import SHARED, requires_shared
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth"

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.compiler.test_cli import sovarc
+from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import EXAMPLES
 from tests.targets.fmu.fake_fmu import write_fmu
 

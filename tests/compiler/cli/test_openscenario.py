@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 from lxml import etree
-from sovarc.compiler.cli_backend import OSC_VERSIONS
+from sovarc.compiler.cli.parser import OSC_VERSIONS
 from sovarc.targets.openscenario import DEFAULT_VERSION, VERSIONS, check
 from sovarc.targets.openscenario.readback import read_scenario
 from sovarc.targets.openscenario.validation import xsd_finding
 
-from tests.compiler.test_cli import LEFT_TURN, sovarc
+from tests.compiler.cli.test_cli import LEFT_TURN, sovarc
 
 
 def test_the_cli_offers_the_versions_the_target_writes() -> None:

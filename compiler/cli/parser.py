@@ -4,23 +4,19 @@ from __future__ import annotations
 
 import argparse
 from importlib.metadata import PackageNotFoundError, version
+from typing import Any
 
-from sovarc.compiler.cli_backend import (
-    add_lower_parser,
-    add_site_options,
-    add_srr_parser,
-    add_target_options,
-    target_names,
-)
-from sovarc.compiler.cli_common import add_llm_options
-from sovarc.compiler.cli_eval_tests import add_tests_parser
+import sovarc.targets.registry as registry
+from sovarc.compiler.cli.common import add_llm_options
 from sovarc.compiler.pipeline import STAGE_NAMES
-from sovarc.targets import registry
 
 try:
     __version__ = version("sovarc")
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
+
+# The OpenSCENARIO versions the target writes, as its --osc-version option declares them.
+OSC_VERSIONS: tuple[str, ...] = next(f.choices or () for f in registry.all_flags() if f.flag == "--osc-version")
 
 DESCRIPTION = """\
 sovarc compiles a police crash report into executable driving-test scenarios.
@@ -63,6 +59,20 @@ COMMANDS: dict[str, str] = {
 }
 
 
+TESTS_DESCRIPTION = """\
+Stage every scenario on --roads sites of each map; on each planned site, every vehicle takes its
+turn as the ego (an FMI 2.0 FMU: the reference ego unless --ego) among the participants replaying
+the report's crash, and, with --baseline random, among random but plausible NPCs on the same site.
+Prints, per road kind, the failed tests of each (the paper's Table 6), the failures by check and by
+what the ego did wrong (the paper's violation types), and the scenario-sites that could not be
+planned, which have no tests.
+
+examples:
+  sovarc import-truth ../shared/data/nmvccs/truth -o truth
+  sovarc eval tests truth --roads 3 -m examples/maps/town.net.xml --baseline random
+  sovarc eval tests examples/scenarios/straight_double_yellow_pass_frontal.sov --ego my_ads.fmu --json"""
+
+
 def _formatter(prog: str) -> argparse.HelpFormatter:
     return argparse.RawDescriptionHelpFormatter(prog, max_help_position=32)
 
@@ -86,7 +96,7 @@ def build_parser() -> argparse.ArgumentParser:
             "  sovarc scenario.sov -o checked.sov\n"
             "  sovarc examples/reports/left_turn_oncoming_pickup.txt -t sumo --roads 3 -o out\n"
             "  sovarc examples/reports/left_turn_oncoming_pickup.txt -t openscenario --osc-version 1.0 -o out\n"
-            "  sovarc scenario.sov --dump-ir-after=lower -m city.net.xml"
+            "  sovarc scenario.sov --dump-ir-after=stage -m city.net.xml"
         ),
     )
     run.add_argument("input", help="a crash report (.txt) or a scenario (.sov)")
@@ -103,7 +113,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--stop-after", choices=STAGE_NAMES, metavar="STAGE", help="stop after this stage")
     run.add_argument(
         "--dump-ir-after",
-        choices=(*STAGE_NAMES, "lower"),
+        choices=STAGE_NAMES,
         metavar="STAGE",
         action="append",
         default=[],
@@ -112,7 +122,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
     add_llm_options(run)
 
-    add_lower_parser(sub, COMMANDS["lower"], _formatter)
+    _add_lower_parser(sub, COMMANDS["lower"], _formatter)
 
     check = sub.add_parser(
         "check",
@@ -239,6 +249,113 @@ def build_parser() -> argparse.ArgumentParser:
     exv.add_argument("--truth", required=True, help="folder of <category>/<n>.json ground truth")
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     add_llm_options(exv)
-    add_srr_parser(which, _formatter)
-    add_tests_parser(which, _formatter)
+    _add_srr_parser(which, _formatter)
+    _add_tests_parser(which, _formatter)
     return parser
+
+
+def add_site_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-m", "--map", help="road network, .net.xml or .xodr (default: the bundled example town)")
+    parser.add_argument("--roads", type=int, default=1, metavar="N", help="stage on N distinct sites (default 1)")
+    add_spare_option(parser)
+
+
+def add_spare_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--spare-sites",
+        type=_not_negative,
+        metavar="K",
+        help="when a chosen site cannot host the crash, try up to K more sites in its place, each one noted "
+        "with its reason (default: three times --roads; 0 keeps the first choice, failures and all)",
+    )
+
+
+def _not_negative(value: str) -> int:
+    number = int(value)
+    if number < 0:
+        raise argparse.ArgumentTypeError(f"must be 0 or more, not {number}")
+    return number
+
+
+def _positive(value: str) -> int:
+    number = int(value)
+    if number < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, not {number}")
+    return number
+
+
+def target_names(value: str) -> tuple[str, ...]:
+    """`-t`: a registered target's name, or all of them."""
+    names = registry.names()
+    if value == "all":
+        return names
+    if value not in names:
+        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
+    return (value,)
+
+
+def add_target_options(parser: argparse.ArgumentParser) -> None:
+    """Each registered target's options as flags (a shared one, like --seed, the parser has already)."""
+    for flag in registry.all_flags():
+        if flag.shared:
+            continue
+        parser.add_argument(flag.flag, type=flag.type, choices=flag.choices, default=flag.default, help=flag.help)
+
+
+def _add_lower_parser(sub: Any, summary: str, formatter: Any) -> None:
+    low = sub.add_parser(
+        "lower",
+        help=summary,
+        formatter_class=formatter,
+        description=(
+            "Stage a scenario on sites of a map: routes, the collision area, Z3 constraints (Groups 1-5),\n"
+            "OMPL paths and Ruckig timing. Writes, per site, plan.txt (readable), plan.json and plan.png.\n\n"
+            "examples:\n"
+            "  sovarc lower examples/scenarios/intersection_left_turn_across_path_side.sov -o out\n"
+            "  sovarc lower scenario.sov -m city.net.xml --roads 3 --seed 7 -o out"
+        ),
+    )
+    low.add_argument("input", help="a scenario (.sov or .json)")
+    add_site_options(low)
+    low.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    low.add_argument("-o", "--output", required=True, help="folder for one sub-folder per site")
+
+
+def _add_srr_parser(which: Any, formatter: Any) -> None:
+    srr = which.add_parser(
+        "srr",
+        formatter_class=formatter,
+        help="scenario reconstruction rate in SUMO, per road kind",
+        description="Stage every scenario on --roads sites of each map, replay it in SUMO and print the\n"
+        "reconstruction rate per road kind (the paper's Table 4) and the failures by class\n"
+        "(Table 5: planning failed, crash type mismatch, line crossing).\n\n"
+        "example:\n"
+        "  sovarc import-truth ../shared/data/nmvccs/truth -o truth\n"
+        "  sovarc eval srr truth --roads 3 -m examples/maps/town.net.xml --json srr.json",
+    )
+    srr.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
+    srr.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
+    srr.add_argument("--roads", type=int, default=3, metavar="N", help="sites per scenario (default 3)")
+    add_spare_option(srr)
+    srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
+    srr.add_argument("--json", help="also write every scenario-site's result here")
+
+
+def _add_tests_parser(which: Any, formatter: Any) -> None:
+    tests = which.add_parser(
+        "tests",
+        formatter_class=formatter,
+        help="ego failures: report-derived tests against random ones (Table 6)",
+        description=TESTS_DESCRIPTION,
+    )
+    tests.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
+    tests.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
+    tests.add_argument("--roads", type=_positive, default=3, metavar="N", help="sites per scenario (default 3)")
+    add_spare_option(tests)
+    tests.add_argument(
+        "--baseline", choices=("random", "none"), default="random", help="the baseline to compare with (default random)"
+    )
+    tests.add_argument("--ego", metavar="FMU", help="the driving system under test (default: the reference ego)")
+    tests.add_argument("--seed", type=int, default=0, help="seed for the sites and the random NPCs (default 0)")
+    tests.add_argument("--json", action="store_true", help="print the figures and every verdict as JSON")
+    tests.add_argument("-o", "--output", help="write each test's verdict, and a PNG of each failed test, under here")

@@ -1,58 +1,22 @@
-"""The `sovarc` command line: `main`, and the handlers of the commands that work on scenario files."""
+"""The commands that work on scenario files: check, fmt, diff, convert, schema, import-truth, extract."""
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
-from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from sovarc.compiler.cli_backend import cmd_lower, print_plans, run_targets
-from sovarc.compiler.cli_common import Reporter, UsageError, make_front_end, pipeline_options, source_of
-from sovarc.compiler.cli_eval import cmd_eval
-from sovarc.compiler.cli_parser import COMMANDS, build_parser
+from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end, source_of
+from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.pipeline import entry_stage, run_pipeline
+from sovarc.compiler.progress import progress
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
-from sovarc.dsl import Severity, SovarcError, diff, json_schema, to_text, verify, verify_or_raise
-from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE
+from sovarc.dsl import Severity, SovarcError, diff, json_schema, read_source, to_text, verify, verify_or_raise
+from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
 
 
-def _cmd_run(args: argparse.Namespace) -> int:
-    from sovarc.dsl import read_source
-
-    start = entry_stage(args.input)
-    source = read_source(args.input, "report or scenario file")
-
-    def after(stage, value):
-        if stage.name in args.dump_ir_after:
-            print(f"// ----- IR after {stage.name} -----")
-            print(stage.render(value), end="")
-
-    try:
-        result, log = run_pipeline(
-            source, start=start, stop=args.stop_after, options=pipeline_options(args), after_stage=after
-        )
-    except SovarcError as exc:
-        print(exc.render({source.name: source}), file=sys.stderr)
-        return EXIT_INPUT
-    for warning in log.warnings:
-        print(warning.render({source.name: source}), file=sys.stderr)
-    if "lower" in args.dump_ir_after:
-        return print_plans(result, args)
-    if args.target:
-        return run_targets(result, args)
-    text = to_text(result)
-    if args.output:
-        write_atomic(args.output, text)
-    elif not args.dump_ir_after:
-        print(text, end="")
-    return EXIT_OK
-
-
-def _cmd_check(args: argparse.Namespace) -> int:
+def cmd_check(args: argparse.Namespace) -> int:
     reporter = Reporter()
     ok = 0
     for name in args.files:
@@ -69,7 +33,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
-def _cmd_fmt(args: argparse.Namespace) -> int:
+def cmd_fmt(args: argparse.Namespace) -> int:
     reporter = Reporter()
     changed = 0
     for name in args.files:
@@ -98,7 +62,7 @@ def _cmd_fmt(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
-def _cmd_diff(args: argparse.Namespace) -> int:
+def cmd_diff(args: argparse.Namespace) -> int:
     reporter = Reporter()
     loaded = []
     for name in (args.old, args.new):
@@ -118,7 +82,7 @@ def _cmd_diff(args: argparse.Namespace) -> int:
     return EXIT_INPUT if (args.exit_code and changes) else EXIT_OK
 
 
-def _cmd_convert(args: argparse.Namespace) -> int:
+def cmd_convert(args: argparse.Namespace) -> int:
     form = args.to or (Path(args.output).suffix.lstrip(".").lower() if args.output else None)
     if form not in ("sov", "json"):
         raise UsageError("say which form to write: -o FILE.sov / -o FILE.json, or --to sov|json")
@@ -135,15 +99,12 @@ def _cmd_convert(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _cmd_schema(args: argparse.Namespace) -> int:
+def cmd_schema(args: argparse.Namespace) -> int:
     print(json.dumps(json_schema(), indent=2, ensure_ascii=False))
     return EXIT_OK
 
 
-def _cmd_import_truth(args: argparse.Namespace) -> int:
-    from sovarc.compiler.frontend.truth import import_truth_file
-    from sovarc.compiler.progress import progress
-
+def cmd_import_truth(args: argparse.Namespace) -> int:
     files: list[Path] = []
     for name in args.inputs:
         path = Path(name)
@@ -171,10 +132,7 @@ def _cmd_import_truth(args: argparse.Namespace) -> int:
     return EXIT_INPUT if reporter.failed else EXIT_OK
 
 
-def _cmd_extract(args: argparse.Namespace) -> int:
-    from sovarc.compiler.progress import progress
-    from sovarc.dsl import read_source
-
+def cmd_extract(args: argparse.Namespace) -> int:
     if len(args.reports) > 1 and not args.output:
         raise UsageError("give -o DIR to extract more than one report")
     reporter = Reporter()
@@ -202,50 +160,3 @@ def _cmd_extract(args: argparse.Namespace) -> int:
     if args.output:
         print(f"{written} of {len(args.reports)} scenario(s) written to {args.output}", file=sys.stderr)
     return EXIT_INPUT if reporter.failed else EXIT_OK
-
-
-HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
-    "extract": _cmd_extract,
-    "eval": cmd_eval,
-    "import-truth": _cmd_import_truth,
-    "run": _cmd_run,
-    "lower": cmd_lower,
-    "check": _cmd_check,
-    "fmt": _cmd_fmt,
-    "diff": _cmd_diff,
-    "convert": _cmd_convert,
-    "schema": _cmd_schema,
-}
-
-
-def main(argv: Sequence[str] | None = None) -> int:
-    argv = list(sys.argv[1:] if argv is None else argv)
-    # `sovarc REPORT -t TARGET` is the main job: a first word that is no command means `run`.
-    if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
-        argv.insert(0, "run")
-    parser = build_parser()
-    try:
-        args = parser.parse_args(argv)
-    except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
-        return int(exc.code or 0)
-    if args.command is None:
-        parser.print_help()
-        return EXIT_USAGE
-    try:
-        return HANDLERS[args.command](args)
-    except UsageError as exc:
-        print(f"sovarc: error: {exc}", file=sys.stderr)
-        return EXIT_USAGE
-    except SovarcError as exc:
-        print(exc.render(), file=sys.stderr)
-        return EXIT_INPUT
-    except BrokenPipeError:  # `sovarc ... | head`: the reader has gone; that is fine
-        sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - keep Python's exit flush quiet
-        return EXIT_OK
-    except KeyboardInterrupt:
-        print("sovarc: interrupted", file=sys.stderr)
-        return 130
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,4 +1,4 @@
-"""What the `sovarc` subcommands share: the usage error, the --llm options, the front end and the diagnostic printer."""
+"""What the `sovarc` commands share: the usage error, the --llm options, the front end and the diagnostic printer."""
 
 from __future__ import annotations
 
@@ -7,15 +7,12 @@ import sys
 from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING
 
+from sovarc.compiler.frontend import MODEL_EXTRA_HINT, FrontEnd, check_llm, default_llm
 from sovarc.compiler.pipeline import Options
-from sovarc.dsl import Severity, SovarcError
+from sovarc.dsl import Severity, SovarcError, read_source
 from sovarc.dsl.errors import Diagnostic
 from sovarc.dsl.span import Source, Span
-
-if TYPE_CHECKING:
-    from sovarc.compiler.frontend import FrontEnd
 
 
 class UsageError(Exception):
@@ -24,8 +21,6 @@ class UsageError(Exception):
 
 def add_llm_options(parser: argparse.ArgumentParser) -> None:
     """--llm, --model and --llm-base-url: how a subcommand reads reports."""
-    from sovarc.compiler.frontend import check_llm
-
     parser.add_argument(
         "--llm",
         default=None,
@@ -40,8 +35,6 @@ def add_llm_options(parser: argparse.ArgumentParser) -> None:
 
 def resolve_llm(args: argparse.Namespace) -> str:
     """The --llm value to use; without --llm, the embedded model if installed, else the rules (with a note)."""
-    from sovarc.compiler.frontend import MODEL_EXTRA_HINT, default_llm
-
     llm = args.llm or ("embedded" if args.model else default_llm())
     if args.llm is None and llm == "none":
         print(
@@ -59,12 +52,10 @@ def resolve_llm(args: argparse.Namespace) -> str:
 
 def make_front_end(args: argparse.Namespace) -> FrontEnd:
     """The front end the --llm options ask for; the caller closes it."""
-    from sovarc.compiler.frontend import FrontEnd
-
     return FrontEnd(resolve_llm(args), args.model, args.llm_base_url)
 
 
-def pipeline_options(args: argparse.Namespace) -> Options:
+def front_end_options(args: argparse.Namespace) -> Options:
     """The pipeline's options from --seed and the --llm options."""
     model = str(args.model) if args.model else None
     return Options(seed=args.seed, llm=resolve_llm(args), model=model, llm_base_url=args.llm_base_url)
@@ -98,8 +89,6 @@ class Reporter:
 def source_of(name: str) -> Source | None:
     """The file's text, for quoting it under a diagnostic, when it can be read at all."""
     try:
-        from sovarc.dsl import read_source
-
         return read_source(name)
     except SovarcError:
         return None

@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import pytest
-from sovarc.targets.fmu import EgoFmu, TestsTable, evaluate_tests
+from sovarc.compiler.evaluation.tests import TestsTable, evaluate_tests
+from sovarc.compiler.maps import RoadMap
+from sovarc.targets.fmu import EgoFmu
 
 from tests.targets.fmu.plans import car_following, cut_in
 
 pytestmark = pytest.mark.slow  # runs SUMO and an FMU
 
 
-def test_table_counts_failures_per_kind_and_method(reference: EgoFmu) -> None:
-    table = evaluate_tests([car_following(), cut_in()], reference, seed=0)
+def test_table_counts_failures_per_kind_and_method(reference: EgoFmu, town: RoadMap) -> None:
+    table = evaluate_tests([car_following(), cut_in()], town, reference, seed=0)
     data = table.to_json()
     straight = data["rows"]["straight"]
     assert straight == {

@@ -5,31 +5,40 @@ lanes at a random steady speed: at a junction, a random connection (in on one ar
 junction, out on another's), reaching the junction at a random time within the plan's duration; on a
 straight road, a random lane of a random direction from a random point. A pedestrian walks across the
 site's centre in a random direction. Nothing depends on the crash the report describes.
+
+The NPCs are drawn here, on the map the plan was staged on; the FMU target runs the plans it is given
+(`run_test_results(plan, tests=random_tests(plan, road_map, seed, egos(plan)), method="random")`).
 """
 
 from __future__ import annotations
 
-import functools
 import math
 import random
+from collections.abc import Iterable
 from dataclasses import replace
-from typing import Any
 
 import numpy as np
 from sovarc.compiler.geometry.polyline import Point, Polyline
+from sovarc.compiler.maps import RoadMap, Site, find_sites
 from sovarc.compiler.plan import Plan, Sample, Segment, Trajectory
 from sovarc.dsl.errors import OracleError
-from sovarc.targets.fmu.task import PATH_GAP
+from sumolib.net import Net
 
 SPEED_RANGE = (0.5, 1.0)  # share of the lane's speed limit an NPC drives at
 WALK = (1.0, 1.6)  # m/s, a pedestrian's pace
 CLEARANCE = 10.0  # m an NPC starts away from the ego and from the other NPCs
 TRIES = 30
+PATH_GAP = 0.05  # m: an NPC's path drops each point this near the last one it kept (as the FMU target's routes)
 
 
-def random_npcs(plan: Plan, ego: str, seed: int) -> Plan:
-    """The plan with every participant but `ego` replaced by a random one on the same site."""
-    site, net = _site(plan.map, plan.site)
+def random_tests(plan: Plan, road_map: RoadMap, seed: int, egos: Iterable[str]) -> dict[str, Plan]:
+    """For each participant that takes a turn as the ego, the plan of its random test."""
+    return {ego: random_npcs(plan, road_map, ego, seed) for ego in egos}
+
+
+def random_npcs(plan: Plan, road_map: RoadMap, ego: str, seed: int) -> Plan:
+    """The plan with every participant but `ego` replaced by a random one on the same site of `road_map`."""
+    site, net = _site(road_map, plan.site), road_map.net
     # one draw per test: keyed by the scenario too, or every scenario staged on a site would get the
     # same NPCs for the same ego, and one lucky or unlucky draw would count once per scenario
     rng = random.Random(f"{seed}:{plan.scenario.name}:{plan.site}:{ego}")
@@ -51,24 +60,14 @@ def random_npcs(plan: Plan, ego: str, seed: int) -> Plan:
     return replace(plan, trajectories=tuple(trajectories), notes=notes)
 
 
-@functools.lru_cache(maxsize=4)
-def _load(map_path: str) -> Any:
-    from sovarc.compiler.maps import load_map
-
-    return load_map(map_path)
-
-
-def _site(map_path: str, site_id: str) -> tuple[Any, Any]:
-    from sovarc.compiler.maps import find_sites
-
-    road_map = _load(map_path)
+def _site(road_map: RoadMap, site_id: str) -> Site:
     site = next((s for s in find_sites(road_map) if s.id == site_id), None)
     if site is None:
         raise OracleError(f"the random baseline needs the plan's site {site_id}, which {road_map.name} does not have")
-    return site, road_map.net
+    return site
 
 
-def _random_trajectory(plan: Plan, template: Trajectory, site: Any, net: Any, rng: random.Random) -> Trajectory:
+def _random_trajectory(plan: Plan, template: Trajectory, site: Site, net: Net, rng: random.Random) -> Trajectory:
     if template.body.vclass == "pedestrian":
         return _walker(plan, template, site, rng)
     if site.connections:
@@ -96,7 +95,7 @@ def _random_trajectory(plan: Plan, template: Trajectory, site: Any, net: Any, rn
     )
 
 
-def _walker(plan: Plan, template: Trajectory, site: Any, rng: random.Random) -> Trajectory:
+def _walker(plan: Plan, template: Trajectory, site: Site, rng: random.Random) -> Trajectory:
     heading = rng.uniform(0.0, 360.0)
     pace = rng.uniform(*WALK)
     cross_at = rng.uniform(1.0, max(plan.duration, 1.5))  # s when it passes the centre

@@ -1,4 +1,5 @@
-"""A chosen site that cannot host the crash is replaced by the next one, and the output says so."""
+"""The site-filling wrapper: a chosen site that cannot host the crash is replaced by the next one, and the
+output says so."""
 
 from __future__ import annotations
 
@@ -7,12 +8,13 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from sovarc.compiler.backend import SiteResult, fill_slots, plans_for, summary
 from sovarc.compiler.maps import load_map
+from sovarc.compiler.pipeline import Options, stage_sites
+from sovarc.compiler.slots import SiteResult, fill_slots, summary
 from sovarc.dsl import parse
 from sovarc.dsl.errors import Diagnostic, UnsatError
 
-from tests.compiler.test_cli import sovarc
+from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import EXAMPLES
 
 # Both cars drive straight across and meet front to front: only a junction whose roads cross
@@ -82,10 +84,10 @@ def test_no_spare_keeps_the_first_choice() -> None:
 def test_an_oblique_frontal_crash_moves_to_the_junctions_that_can_host_it() -> None:
     town = load_map(EXAMPLES / "maps" / "town.net.xml")
     scenario = parse(OBLIQUE_FRONTAL, "oblique.sov")
-    first = plans_for(scenario, town, 3, 0, spare=0)
-    spared = plans_for(scenario, town, 3, 0)
+    first = stage_sites(scenario, Options(map=town, roads=3, spare=0))
+    spared = stage_sites(scenario, Options(map=town, roads=3))
     assert sum(r.plan is not None for r in spared) > sum(r.plan is not None for r in first)
-    assert [r.site for r in spared] == [r.site for r in plans_for(scenario, town, 3, 0)]  # deterministic
+    assert [r.site for r in spared] == [r.site for r in stage_sites(scenario, Options(map=town, roads=3))]
     given_up = [s for r in spared for s in r.skipped]
     assert given_up and all("paths cross at" in s.error.diagnostics[0].message for s in given_up)
     planned = {r.site for r in spared if r.plan is not None}
@@ -130,7 +132,7 @@ def test_a_defect_on_one_site_is_that_site_s_error_and_the_next_site_is_tried(mo
 
     monkeypatch.setattr(synth, "synthesize", breaks_first)
     scenario = parse((EXAMPLES / "scenarios" / "straight_rear_end_stopped_traffic.sov").read_text(), "s.sov")
-    [slot] = plans_for(scenario, load_map(EXAMPLES / "maps" / "town.net.xml"), roads=1, seed=0)
+    [slot] = stage_sites(scenario, Options(map=load_map(EXAMPLES / "maps" / "town.net.xml")))
     assert slot.plan is not None and slot.site == calls[1]
     [given_up] = slot.skipped
     message = given_up.error.diagnostics[0].message  # type: ignore[union-attr]

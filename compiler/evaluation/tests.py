@@ -1,9 +1,10 @@
-"""`sovarc eval tests --baseline random`: ego failures found by report-derived tests against random ones.
+"""`sovarc eval tests`: ego failures found by report-derived tests against random ones (the paper's Table 6).
 
-For each plan (one scenario on one site), every vehicle takes its turn as the ego twice: among the
-participants replaying the report's crash, and among random NPCs on the same site. The table is in
-the form of the paper's Table 6: failed tests per road kind, report-derived versus random; then the
-failures by check and by violation (violations.py, the spirit of the paper's violation types). A
+Every scenario is staged on --roads sites of a map (the pipeline's assume, sites and stage); for each
+plan, every vehicle takes its turn as the FMU target's ego twice: among the participants replaying the
+report's crash, and among random NPCs on the same site (baseline.py). The table is in the form of the
+paper's Table 6: failed tests per road kind, report-derived versus random; then the failures by check
+and by violation (targets/fmu/violations.py, the spirit of the paper's violation types). A
 scenario-site that could not be planned is counted as such, with its reason.
 """
 
@@ -16,13 +17,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from sovarc.compiler.evaluation.baseline import random_tests
+from sovarc.compiler.maps import RoadMap
+from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
-from sovarc.dsl.ir import RoadKind
-from sovarc.targets.fmu.interface import EgoFmu, validate_fmu
+from sovarc.compiler.progress import progress
+from sovarc.compiler.slots import first_message
+from sovarc.dsl.errors import InputError, SovarcError, SynthesisError, UnsatError
+from sovarc.dsl.ir import RoadKind, Scenario
+from sovarc.targets.fmu import EgoFmu, egos, reference_fmu, run_test_results, validate_fmu, write_results
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
-from sovarc.targets.fmu.output import write_results
-from sovarc.targets.fmu.reference import reference_fmu
-from sovarc.targets.fmu.runner import Method, run_test_results
+from sovarc.targets.fmu.runner import Method
 from sovarc.targets.verdict import Verdict
 
 METHODS: tuple[Method, ...] = ("report", "random")
@@ -81,13 +86,21 @@ class TestsTable:
         self.verdicts.append(verdict)
 
     def add_plan(
-        self, plan: Plan, ego: EgoFmu, seed: int = 0, *, baseline: bool = True, out_dir: Path | None = None
+        self,
+        plan: Plan,
+        road_map: RoadMap,
+        ego: EgoFmu,
+        seed: int = 0,
+        *,
+        baseline: bool = True,
+        out_dir: Path | None = None,
     ) -> None:
-        """Run the plan's report-derived tests and (with baseline) its random ones; with out_dir, write
-        each test's verdict there, and a picture of each failed one."""
+        """Run the plan's report-derived tests and (with baseline) its random ones on the map's site; with
+        out_dir, write each test's verdict there, and a picture of each failed one."""
         self.planned[plan.kind.value] += 1
         for method in METHODS if baseline else METHODS[:1]:
-            results = run_test_results(plan, ego, seed, method=method)
+            tests = random_tests(plan, road_map, seed, egos(plan)) if method == "random" else None
+            results = run_test_results(plan, ego, seed, method=method, tests=tests)
             for result in results:
                 self.add(plan.kind.value, method, result.verdict)
                 self.walls.append(result.run.wall)
@@ -187,12 +200,79 @@ class TestsTable:
         }
 
 
+def load_ego(path: str | Path | None) -> EgoFmu:
+    """The driving system under test: the FMU at `path`, else the reference ego; refused when its interface is not
+    the one the FMU target drives (FmuInterfaceError lists every mismatch)."""
+    return validate_fmu(path or reference_fmu())
+
+
 def evaluate_tests(
-    plans: Iterable[Plan], ego_fmu: str | Path | EgoFmu | None = None, seed: int = 0, *, baseline: bool = True
+    plans: Iterable[Plan],
+    road_map: RoadMap,
+    ego_fmu: str | Path | EgoFmu | None = None,
+    seed: int = 0,
+    *,
+    baseline: bool = True,
 ) -> TestsTable:
-    """Run the report-derived tests of every plan, and (with baseline) the random ones."""
+    """Run the report-derived tests of every plan (staged on `road_map`), and (with baseline) the random ones."""
     ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
     table = TestsTable()
     for plan in plans:
-        table.add_plan(plan, ego, seed, baseline=baseline)
+        table.add_plan(plan, road_map, ego, seed, baseline=baseline)
     return table
+
+
+def tests_table(
+    scenarios: list[Scenario],
+    road_map: RoadMap,
+    ego: EgoFmu,
+    *,
+    roads: int,
+    seed: int = 0,
+    spare: int | None = None,
+    baseline: bool = True,
+    out_dir: Path | None = None,
+) -> TestsTable:
+    """Plan every scenario on `roads` sites of the map and run its tests (writing them under out_dir, if
+    given); a scenario-site that cannot be planned is counted, with its reason, and has no tests."""
+    table = TestsTable()
+    options = Options(map=road_map, roads=roads, seed=seed, spare=spare)
+    for scenario in progress(scenarios, len(scenarios), label=f"tests {road_map.name}"):
+        kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
+        try:
+            results = stage_sites(scenario, options)
+        except SovarcError as exc:  # facts no road can reconcile, or no site of its kind
+            why = "unsat" if isinstance(exc, UnsatError) else "no fitting site"
+            for _ in range(roads):
+                table.add_unplanned(scenario.name, kind, "-", why, first_message(exc))
+            continue
+        for r in results:
+            if r.plan is None:
+                table.add_unplanned(scenario.name, kind, r.site, _why(r.error), first_message(r.error))
+            else:
+                table.add_plan(r.plan, road_map, ego, seed, baseline=baseline, out_dir=out_dir)
+        for _ in range(roads - len(results)):
+            table.add_unplanned(scenario.name, kind, "-", "no fitting site", "fewer fitting sites than asked")
+    return table
+
+
+def scenario_files(names: list[str]) -> list[Path]:
+    files: list[Path] = []
+    for name in names:
+        path = Path(name)
+        if path.is_dir():
+            found = sorted(path.glob("*.sov"))
+            if not found:
+                raise InputError(f"{name}: no .sov scenarios in this folder")
+            files += found
+        else:
+            files.append(path)  # a missing or unreadable file is load_scenario's clear error
+    return files
+
+
+def _why(error: SovarcError | None) -> str:
+    if isinstance(error, UnsatError):
+        return "unsat"
+    if isinstance(error, SynthesisError):
+        return "synthesis"
+    return "lowering" if error is not None and error.stage == "lower" else "other"
