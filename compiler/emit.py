@@ -1,11 +1,12 @@
-"""What the emit and check stages write for one planned site: the plan's files, and each target's.
+"""What the emit and check stages do for one planned site: the plan's files, each target's files
+(`emit_target`), and each target's check with its verdicts written (`check_target`).
 
-`run_target` is the one place the compiler calls a target (emit it, check it, write its verdict).
+This is the one place the compiler calls a target, through the registry.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -15,7 +16,7 @@ from sovarc.compiler.maps import RoadMap, with_opendrive
 from sovarc.compiler.plan import Plan, dump_plan
 from sovarc.compiler.plan_picture import draw_plan
 from sovarc.compiler.plan_text import render_plan
-from sovarc.targets.contract import options_from, write_verdicts
+from sovarc.targets.contract import Artifacts, Target, options_from, write_verdicts
 
 
 def write_plan_files(plan: Plan, road_map: RoadMap, folder: Path) -> None:
@@ -25,26 +26,41 @@ def write_plan_files(plan: Plan, road_map: RoadMap, folder: Path) -> None:
     write_atomic(folder / "plan.png", draw_plan(plan, road_map))
 
 
-def run_target(
-    target: str,
-    plan: Plan,
-    folder: Path,
-    *,
-    seed: int = 0,
-    ego: str | None = None,
-    osc_version: str | None = None,
-    **values: Any,
-) -> Any:
-    """Emit and check one registered target into `folder/<target>/`; write its verdicts beside it
-    (`folder/verdict-<target>.json`) and return them: the Verdict, or the list for a target with one per test.
+@dataclass(frozen=True)
+class Emitted:
+    """One target's files for one plan, and what its check needs to judge them."""
 
-    The keywords are command-line values by flag destination (`osc_version` is --osc-version; None:
-    the target's default). A target that reads OpenDRIVE gets the plan's network with its .xodr."""
+    target: Target
+    plan: Plan  # as emitted (with its OpenDRIVE file where the target reads one)
+    options: Any
+    artifacts: Artifacts
+
+
+def target_options(target: str, *, seed: int = 0, ego: str | None = None, osc_version: str | None = None,
+                   **values: Any) -> Any:  # fmt: skip
+    """A registered target's Options from command-line values by flag destination (None: its default)."""
+    return options_from(registry.get(target), {"seed": seed, "ego": ego, "osc_version": osc_version, **values})
+
+
+def emit_target(target: str, plan: Plan, folder: Path, options: Any) -> Emitted:
+    """Emit one registered target into `folder/<target>/`. A target that reads OpenDRIVE gets the
+    plan's network with its .xodr, converted by the map layer (targets never convert maps)."""
     chosen = registry.get(target)
-    options = options_from(chosen, {"seed": seed, "ego": ego, "osc_version": osc_version, **values})
     if chosen.needs_opendrive:
         plan = replace(plan, network=with_opendrive(plan.network))
-    artifacts = chosen.emit(plan, folder / chosen.name, options)
-    verdicts = chosen.check(plan, artifacts, options)
-    write_verdicts(folder, chosen, verdicts)
-    return verdicts[0] if chosen.one_verdict else verdicts
+    return Emitted(chosen, plan, options, chosen.emit(plan, folder / chosen.name, options))
+
+
+def check_target(emitted: Emitted, folder: Path) -> Any:
+    """Check what a target emitted and write its verdicts beside its folder (`folder/verdict-<target>.json`);
+    return them: the Verdict, or the list for a target with one per test."""
+    target = emitted.target
+    verdicts = target.check(emitted.plan, emitted.artifacts, emitted.options)
+    write_verdicts(folder, target, verdicts)
+    return verdicts[0] if target.one_verdict else verdicts
+
+
+def run_target(target: str, plan: Plan, folder: Path, **values: Any) -> Any:
+    """Emit and check one registered target (the emit and check stages' work for one target).
+    The keywords are command-line values by flag destination (`osc_version` is --osc-version)."""
+    return check_target(emit_target(target, plan, folder, target_options(target, **values)), folder)

@@ -6,8 +6,8 @@ a printable form, so `--stop-after` and `--dump-ir-after` work for every stage a
     assume  Scenario   -> Assumed    unknown facts filled with noted choices; headings checked
     sites   Assumed    -> Sites      the map's candidate sites for the scenario, in the search's order
     stage   SiteJob    -> SiteResult the lowering-and-synthesis search on one site (staging.py)
-    emit    SiteResult -> SiteResult the plan's files (plan.txt, .json, .png) in the site's folder
-    check   SiteResult -> SiteResult each target emitted and checked (emit.run_target)
+    emit    SiteResult -> SiteResult the plan's files (plan.txt, .json, .png) and each target's files
+    check   SiteResult -> SiteResult each target's oracle on what it emitted; verdict-<target>.json
 
 The last three run once per site, inside the wrapper that fills several sites (`fill`: --roads N,
 spare sites in place of failed ones; slots.py); their printable form is that of every slot.
@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from sovarc.compiler.emit import run_target, write_plan_files
+from sovarc.compiler.emit import check_target, emit_target, target_options, write_plan_files
 from sovarc.compiler.frontend import extract_report
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.lower.assume import assume
@@ -180,9 +180,14 @@ def _render_plans(slots: Slots) -> str:
 
 
 def _emit(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
+    """The plan's files, then each target's, in the site's folder."""
     if options.out_dir is not None and result.plan is not None and result.road_map is not None:
         result.folder = options.out_dir / folder_name(result.site)
         write_plan_files(result.plan, result.road_map, result.folder)
+        for target in options.targets:
+            values = {"seed": options.seed, "ego": options.ego, "osc_version": options.osc_version}
+            chosen = target_options(target, **values, **options.target_values)
+            result.emitted[target] = emit_target(target, result.plan, result.folder, chosen)
     return result
 
 
@@ -199,17 +204,10 @@ def _render_sites_table(slots: Slots) -> str:
 
 
 def _check(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
-    if result.folder is not None and result.plan is not None:
-        for target in options.targets:
-            result.verdicts[target] = run_target(
-                target,
-                result.plan,
-                result.folder,
-                seed=options.seed,
-                ego=options.ego,
-                osc_version=options.osc_version,
-                **options.target_values,
-            )
+    """Each target's oracle on what it emitted; its verdicts written beside its folder."""
+    if result.folder is not None:
+        for target, emitted in result.emitted.items():
+            result.verdicts[target] = check_target(emitted, result.folder)
     return result
 
 
@@ -226,9 +224,9 @@ PIPELINE: tuple[Stage, ...] = (
     Stage("sites", "find the map's candidate sites for the scenario", Assumed, Sites, _sites, _render_sites),
     Stage("stage", "per site: lower, synthesize and verify stagings; keep the first plan that passes",
           SiteJob, SiteResult, _stage, _render_plans, per_site=True),
-    Stage("emit", "per site: write plan.txt, plan.json and plan.png",
+    Stage("emit", "per site: write plan.txt, plan.json and plan.png, and each target's files",
           SiteResult, SiteResult, _emit, _render_sites_table, per_site=True, unfilled=_emit_unfilled),
-    Stage("check", "per site: emit and check each target",
+    Stage("check", "per site: each target's oracle, its verdicts written",
           SiteResult, SiteResult, _check, _render_summary, per_site=True),
 )  # fmt: skip
 

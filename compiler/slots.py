@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from sovarc.compiler.emit import Emitted
 from sovarc.compiler.maps import RoadMap, SiteMatch
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.errors import SovarcError
@@ -33,6 +34,7 @@ class SiteResult:
     folder: Path | None = None
     skipped: list[SiteResult] = field(default_factory=list)  # sites tried first for this slot, which failed
     road_map: RoadMap | None = field(default=None, repr=False)  # the map it was planned on
+    emitted: dict[str, Emitted] = field(default_factory=dict, repr=False)  # target -> its files, for the check
 
 
 def default_spare(roads: int) -> int:
