@@ -19,12 +19,11 @@ import time
 from functools import partial
 from pathlib import Path
 
-from sovarc.compiler.backend import SiteResult, default_spare, fill_slots, plan_site
-from sovarc.compiler.lower import sites_for
-from sovarc.compiler.maps import RoadMap, SiteMatch, load_map
+from sovarc.compiler.maps import SiteMatch, load_map
+from sovarc.compiler.pipeline import Options, RunLog, SiteJob, Sites, run_pipeline, stage_named
+from sovarc.compiler.slots import SiteResult, default_spare, fill_slots
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SovarcError
-from sovarc.dsl.ir import Scenario
 from sovarc.targets.sumo import check, emit
 from timing import percentile
 
@@ -40,21 +39,22 @@ def main() -> None:
     args = parser.parse_args()
     spare = default_spare(args.roads) if args.spare is None else args.spare
     road_map = load_map(args.map)
+    options = Options(map=road_map, roads=args.roads, spare=spare)
     seconds, searches, passed, attempted, replaced = [], [], 0, 0, 0
     start_all = time.perf_counter()
     for path in sorted(args.truth.glob("*.sov")):
         scenario = parse(path.read_text(encoding="utf-8"), str(path))
         start = time.perf_counter()
         try:
-            staged, notes, matches = sites_for(scenario, road_map, roads=args.roads + spare)
+            sites, _ = run_pipeline(scenario, start="assume", stop="sites", options=options)
         except SovarcError:
             attempted += args.roads
             continue
         searches.append(time.perf_counter() - start)
         attempted += args.roads
         spent: dict[str, float] = {}
-        attempt = partial(_timed_plan, staged, notes, road_map, spent)
-        for slot in fill_slots(matches, args.roads, attempt):
+        attempt = partial(_timed_plan, sites, options, spent)
+        for slot in fill_slots(sites.candidates, args.roads, attempt):
             start = time.perf_counter()
             if slot.plan is not None:
                 with tempfile.TemporaryDirectory(prefix="bench-backend-") as tmp:
@@ -72,12 +72,10 @@ def main() -> None:
     print(f"whole run: {total:.1f} s")
 
 
-def _timed_plan(
-    staged: Scenario, notes: list[str], road_map: RoadMap, spent: dict[str, float], match: SiteMatch
-) -> SiteResult:
-    """Lower and synthesize on one site, noting the seconds it took in `spent`."""
+def _timed_plan(sites: Sites, options: Options, spent: dict[str, float], match: SiteMatch) -> SiteResult:
+    """The pipeline's stage stage on one site (lower and synthesize), noting the seconds it took in `spent`."""
     start = time.perf_counter()
-    result = plan_site(staged, notes, road_map, match)
+    result = stage_named("stage").run(SiteJob(sites, match), options, RunLog())
     spent[match.site.id] = time.perf_counter() - start
     return result
 

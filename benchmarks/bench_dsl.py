@@ -11,6 +11,7 @@ import time
 from pathlib import Path
 
 from sovarc.dsl import from_json, parse, to_json, to_text, verify
+from sovarc.dsl.parser import _lark
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -47,8 +48,6 @@ def main() -> None:
         per_file = _time(fn, args.repeat) / n
         print(f"{name:<10} {per_file * 1e3:>14.3f} {1 / per_file:>10.0f}")
     start = time.perf_counter()
-    from sovarc.dsl.parser import _lark
-
     _lark.cache_clear()
     _lark()
     print(f"parser build (once per process): {(time.perf_counter() - start) * 1e3:.1f} ms")

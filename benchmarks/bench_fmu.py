@@ -22,7 +22,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 
-from sovarc.compiler.cli_eval_tests import tests_table  # noqa: E402
+from sovarc.compiler.evaluation.tests import tests_table  # noqa: E402
 from sovarc.compiler.frontend.truth import import_truth_file  # noqa: E402
 from sovarc.compiler.maps import load_map  # noqa: E402
 from sovarc.compiler.scenario_io import load_scenario  # noqa: E402

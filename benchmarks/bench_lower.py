@@ -29,9 +29,11 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from sovarc.compiler.backend import SiteResult, default_spare, fill_slots, plan_site
+import sumo
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.maps import RoadMap, find_sites, load_map, match_sites
+from sovarc.compiler.pipeline import Assumed, Options, RunLog, SiteJob, Sites, stage_named
+from sovarc.compiler.slots import SiteResult, default_spare, fill_slots
 from sovarc.dsl import parse
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import RoadKind, Scenario
@@ -58,8 +60,6 @@ class Run:
 
 
 def _maps() -> dict[str, Path]:
-    import sumo
-
     return {
         "town": ROOT / "examples" / "maps" / "town.net.xml",
         "DRT osm": Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml",
@@ -106,7 +106,8 @@ def _stage(
     def attempt(match: Any) -> SiteResult:
         start = time.perf_counter()
         try:
-            result = plan_site(staged, notes, road_map, match, seed)
+            job = SiteJob(Sites(Assumed(staged, tuple(notes)), road_map, tuple(matches), ROADS), match)
+            result = stage_named("stage").run(job, Options(seed=seed), RunLog())
         except Exception as error:  # a crash is a bug: counted and named
             crashes[match.site.id] = f"CRASH {type(error).__name__}: {error}"
             result = SiteResult(match.site.id, error=SovarcError(crashes[match.site.id]))

@@ -32,7 +32,14 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 
-from sovarc.compiler.plan import CAR, Plan, dump_plan, plan_from_json  # noqa: E402
+from sovarc.compiler.maps import load_map  # noqa: E402
+from sovarc.compiler.pipeline import Options as PipelineOptions  # noqa: E402
+from sovarc.compiler.pipeline import stage_sites  # noqa: E402
+from sovarc.compiler.plan import Plan, dump_plan, plan_from_json  # noqa: E402
+from sovarc.compiler.scenario_io import load_scenario  # noqa: E402
+from sovarc.compiler.vehicles import CAR  # noqa: E402
+from sovarc.dsl.errors import SovarcError  # noqa: E402
+from sovarc.targets import sumo  # noqa: E402
 from sovarc.targets.openscenario import check, choose_ego, emit_files  # noqa: E402
 from sovarc.targets.openscenario.emit import build_document  # noqa: E402
 from sovarc.targets.openscenario.provenance import Options  # noqa: E402
@@ -75,10 +82,6 @@ class Row:
 
 def _plans(path: Path, road_map: Any, args: argparse.Namespace, cache: Path | None) -> list[dict[str, Any]]:
     """[{site, plan | None, error | None, synth_s}] for one scenario, from the cache when it has it."""
-    from sovarc.compiler.backend import plans_for
-    from sovarc.compiler.scenario_io import load_scenario
-    from sovarc.dsl.errors import SovarcError
-
     stored = cache / f"{path.stem}.json" if cache else None
     if stored is not None and stored.is_file():
         data = json.loads(stored.read_text(encoding="utf-8"))
@@ -88,7 +91,7 @@ def _plans(path: Path, road_map: Any, args: argparse.Namespace, cache: Path | No
     scenario, _ = load_scenario(path)
     start = time.perf_counter()
     try:
-        results = plans_for(scenario, road_map, args.roads, args.seed)
+        results = stage_sites(scenario, PipelineOptions(map=road_map, roads=args.roads, seed=args.seed))
     except SovarcError as exc:  # no site of the kind at all
         results, message = [], exc.diagnostics[0].message if exc.diagnostics else str(exc)
         entries = [{"site": "-", "plan": None, "error": message, "synth_s": 0.0}]
@@ -111,10 +114,6 @@ def _plans(path: Path, road_map: Any, args: argparse.Namespace, cache: Path | No
 
 
 def evaluate(args: argparse.Namespace) -> list[Row]:
-    from sovarc.compiler.maps import load_map
-    from sovarc.compiler.scenario_io import load_scenario
-    from sovarc.targets import sumo
-
     road_map = load_map(args.map)
     files = sorted(Path(args.truth).glob("*.sov"))
     rows: list[Row] = []
@@ -178,7 +177,7 @@ CLASSES |= {f"{c} (SUMO only)": why for c, why in SUMO_ONLY.items()}
 CLASSES |= {f"{c} (OSC only)": why for c, why in OSC_ONLY.items()}
 
 
-# Known causes of faces named differently at the same first touch (SUMO's in targets/sumo/bodies.first_touch).
+# Known causes of faces named differently at the same first touch (SUMO's in compiler/geometry/bodies.first_touch).
 FACE_CAUSES = {
     "flat contact": (
         "the faces meet flat (headings within 1°): where along the touching stretch the contact lies turns on "

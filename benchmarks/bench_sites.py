@@ -12,6 +12,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
+import sumo
 from sovarc.compiler.maps import find_sites, load_map, match_sites
 from sovarc.dsl import parse
 from sovarc.dsl.errors import LoweringError
@@ -21,8 +22,6 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def _maps() -> dict[str, Path]:
-    import sumo
-
     return {
         "town": ROOT / "examples" / "maps" / "town.net.xml",
         "DRT osm": Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml",

@@ -20,19 +20,18 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # for the tests' plan helper
 
+from sovarc.compiler.lower import lower  # noqa: E402
+from sovarc.compiler.maps import load_map  # noqa: E402
 from sovarc.compiler.plan import Plan  # noqa: E402
+from sovarc.compiler.synth import synthesize  # noqa: E402
+from sovarc.dsl import parse  # noqa: E402
+from sovarc.dsl.errors import SovarcError  # noqa: E402
 from sovarc.targets.sumo import check, emit  # noqa: E402
 
 from tests.targets.sumo.plans import SCENES  # noqa: E402
 
 
 def synthesized() -> dict[str, Plan]:
-    from sovarc.compiler.lower import lower
-    from sovarc.compiler.maps import load_map
-    from sovarc.compiler.synth import synthesize
-    from sovarc.dsl import parse
-    from sovarc.dsl.errors import SovarcError
-
     town = load_map(ROOT / "examples" / "maps" / "town.net.xml")
     plans = {}
     for path in sorted((ROOT / "examples" / "scenarios").glob("*.sov")):

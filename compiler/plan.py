@@ -19,10 +19,10 @@ Conventions, shared by all targets and oracles:
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass
 from typing import Any
 
+from sovarc.compiler.vehicles import Body
 from sovarc.dsl.ir import CrashType, RoadKind, Role, Scenario
 from sovarc.dsl.jsonform import from_json, to_json
 
@@ -36,18 +36,6 @@ class Sample:
     y: float  # m
     heading: float  # compass degrees, [0, 360)
     speed: float  # m/s along the heading; negative while reversing (a three-point turn)
-
-
-@dataclass(frozen=True)
-class Body:
-    length: float  # m
-    width: float  # m
-    vclass: str  # SUMO vehicle class: passenger, pedestrian
-
-
-CAR = Body(4.6, 1.8, "passenger")
-REAR_OVERHANG = 0.22  # of a vehicle's length: how far ahead of its rear its rear axle lies (the axle it turns about)
-PEDESTRIAN = Body(0.5, 0.6, "pedestrian")
 
 
 @dataclass(frozen=True)
@@ -105,10 +93,25 @@ class Impact:
 
 
 @dataclass(frozen=True)
+class Network:
+    """The road network a plan was planned on, in the formats its targets read; nothing here converts.
+
+    The map layer (compiler/maps) fills it: `sumo` is the user's `.net.xml`, or for an OpenDRIVE map
+    netconvert's conversion of it, kept in a content-addressed cache; `opendrive` is the user's
+    `.xodr`, or for a SUMO map its conversion to OpenDRIVE, filled in before a target that reads
+    OpenDRIVE runs (None until then). Targets read these files; they never load maps or run netconvert.
+    """
+
+    map: str  # path of the map file as given
+    sha256: str  # of the map file
+    sumo: str  # the SUMO network (.net.xml) the plan's lanes and edges name
+    opendrive: str | None = None  # the OpenDRIVE file (.xodr), when there is one yet
+
+
+@dataclass(frozen=True)
 class Plan:
     scenario: Scenario
-    map: str  # path of the map file as given
-    map_sha256: str
+    network: Network
     site: str  # site id, e.g. 'junction:J3'
     kind: RoadKind
     rotation: int  # degrees the report's compass was turned onto the site
@@ -117,6 +120,15 @@ class Plan:
     impact: Impact
     trajectories: tuple[Trajectory, ...]
     notes: tuple[str, ...]  # what lowering assumed or clamped, one line each
+
+    @property
+    def map(self) -> str:
+        """Path of the map file as given."""
+        return self.network.map
+
+    @property
+    def map_sha256(self) -> str:
+        return self.network.sha256
 
     def trajectory(self, participant: str) -> Trajectory:
         return next(t for t in self.trajectories if t.participant == participant)
@@ -140,6 +152,7 @@ def plan_to_json(plan: Plan) -> dict[str, Any]:
         "scenario": to_json(plan.scenario),
         "map": plan.map,
         "map_sha256": plan.map_sha256,
+        "network": {"sumo": plan.network.sumo, "opendrive": plan.network.opendrive},
         "site": plan.site,
         "kind": plan.kind.value,
         "rotation": plan.rotation,
@@ -180,8 +193,7 @@ def plan_from_json(data: dict[str, Any], origin: str = "plan") -> Plan:
     impact = data["impact"]
     return Plan(
         scenario=from_json(data["scenario"], origin),
-        map=data["map"],
-        map_sha256=data["map_sha256"],
+        network=_network_from_json(data, origin),
         site=data["site"],
         kind=RoadKind(data["kind"]),
         rotation=int(data["rotation"]),
@@ -212,11 +224,14 @@ def plan_from_json(data: dict[str, Any], origin: str = "plan") -> Plan:
     )
 
 
+def _network_from_json(data: dict[str, Any], origin: str) -> Network:
+    files = data.get("network")
+    if files is None:  # a plan written before plans carried their network: a SUMO map is its own network
+        if not data["map"].lower().endswith(".net.xml"):
+            raise ValueError(f"{origin}: the plan does not name the SUMO network it was planned on; plan again")
+        files = {"sumo": data["map"], "opendrive": None}
+    return Network(data["map"], data["map_sha256"], files["sumo"], files.get("opendrive"))
+
+
 def dump_plan(plan: Plan) -> str:
     return json.dumps(plan_to_json(plan), separators=(",", ":"), ensure_ascii=False) + "\n"
-
-
-def heading_vector(heading: float) -> tuple[float, float]:
-    """Unit vector of a compass heading."""
-    rad = math.radians(heading)
-    return (math.sin(rad), math.cos(rad))

@@ -4,9 +4,10 @@ impact, and the collision area C_A, so that a person can check the plan at a gla
 from __future__ import annotations
 
 import io
-import math
 import os
 
+from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.geometry.bodies import Box
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.plan import Plan
 
@@ -15,6 +16,8 @@ COLOURS = ("#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b")
 
 def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
     """The PNG bytes (matplotlib's Agg backend: no display needed; same plan, same bytes)."""
+    # matplotlib loads here, not with the module: it takes longer to import than most commands
+    # take to run, and only a command that draws needs it.
     import matplotlib
 
     matplotlib.use("Agg")
@@ -40,7 +43,9 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
         ax.plot([s.x for s in t.samples], [s.y for s in t.samples], color=colour, linewidth=1.5, zorder=4)
         ax.plot(t.samples[0].x, t.samples[0].y, "o", color=colour, zorder=5)
         at = t.at(plan.impact.time)
-        ax.add_patch(Polygon(_body(at.x, at.y, at.heading, t.body.length, t.body.width), color=colour, zorder=6))
+        box = Box.of(t.body, at.x, at.y, at.heading).corners()
+        box = box[3:] + box[:3]  # from the front-right corner, as the pictures were always drawn
+        ax.add_patch(Polygon(box, color=colour, zorder=6))
         ax.annotate(t.participant, (t.samples[0].x, t.samples[0].y), fontsize=9, color=colour, zorder=7)
     ax.set_xlim(mx - half, mx + half)
     ax.set_ylim(my - half, my + half)
@@ -52,20 +57,5 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
     return buffer.getvalue()
 
 
-def _body(x: float, y: float, heading: float, length: float, width: float) -> list[tuple[float, float]]:
-    """The body's corners; (x, y) is the front-bumper centre."""
-    fx, fy = math.sin(math.radians(heading)), math.cos(math.radians(heading))
-    rx, ry = fy, -fx
-    w = width / 2
-    return [
-        (x + w * rx, y + w * ry),
-        (x - w * rx, y - w * ry),
-        (x - w * rx - length * fx, y - w * ry - length * fy),
-        (x + w * rx - length * fx, y + w * ry - length * fy),
-    ]
-
-
 def write_picture(plan: Plan, road_map: RoadMap, path: str | os.PathLike[str]) -> None:
-    from sovarc.compiler.fsutil import write_atomic
-
     write_atomic(path, draw_plan(plan, road_map))

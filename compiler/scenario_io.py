@@ -16,7 +16,7 @@ from sovarc.dsl import (
     to_json,
     to_text,
 )
-from sovarc.dsl.span import Source
+from sovarc.dsl.span import Source, Span
 
 
 def load_scenario(path: str | os.PathLike[str]) -> tuple[Scenario, Source]:
@@ -26,8 +26,6 @@ def load_scenario(path: str | os.PathLike[str]) -> tuple[Scenario, Source]:
         try:
             data = json.loads(source.text)
         except json.JSONDecodeError as exc:
-            from sovarc.dsl.span import Span
-
             span = Span(source.name, exc.lineno, exc.colno, exc.lineno, exc.colno + 1)
             raise ParseError(Diagnostic(f"invalid JSON: {exc.msg}", span)) from None
         return from_json(data, source.name), source

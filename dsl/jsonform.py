@@ -7,6 +7,7 @@ The schema is what an LLM's structured output is constrained to.
 
 from __future__ import annotations
 
+import copy
 import functools
 import types
 import typing
@@ -180,6 +181,4 @@ def _cached_schema() -> tuple[tuple[str, Any], ...]:
 
 def json_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of the IR's JSON form."""
-    import copy
-
     return copy.deepcopy(dict(_cached_schema()))

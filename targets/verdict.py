@@ -6,18 +6,8 @@ import json
 from dataclasses import dataclass, field
 from typing import Any
 
-# Degrees between the headings at first touch that each crash type allows, for every oracle.
-# Frontal is front into front with the two approaching each other: head-on, or a car turning
-# across an oncoming one (crash databases, and the ground truth, code that front-to-front). A
-# front corner touching a crossing car at right angles is not frontal: that is a side crash.
-CRASH_ANGLES: dict[str, tuple[float, float]] = {
-    "rear_end": (0.0, 45.0),
-    "frontal": (100.0, 180.0),
-    "side": (0.0, 180.0),
-}
-# m a body may reach over a lane line before it counts as crossing it: the SUMO oracle's bound,
-# which lowering (compiler/lower/swing.py) plans inside.
-LINE_TOLERANCE = 0.25
+# The crash definitions every oracle judges by (angles, faces, lane-line tolerance) are
+# compiler/crashes.py's.
 
 
 @dataclass(frozen=True)

@@ -1,18 +1,26 @@
-"""Shared test helpers: project paths and golden files.
+"""Shared test helpers: project paths, the shared corpus and golden files.
 
 Regenerate every golden file with `pytest --update-goldens`, then review the
 diff like code.
+
+Tests that read the shared corpus (NMVCCS reports and truth, OpenDRIVE maps) find it
+through one variable, SOVARC_SHARED (default: `../shared` beside the checkout), and are
+marked `requires_shared`: without the corpus they skip with a one-line reason.
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
-SHARED = ROOT.parent / "shared"
+SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
+requires_shared = pytest.mark.skipif(
+    not (SHARED / "data").is_dir(), reason=f"needs the shared corpus: set SOVARC_SHARED (no data under {SHARED})"
+)
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:

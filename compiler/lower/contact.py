@@ -23,11 +23,11 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 import numpy as np
+from sovarc.compiler.crashes import CRASH_ANGLES  # what every oracle calls frontal
+from sovarc.compiler.geometry.angles import angle_diff, angle_diffs
 from sovarc.compiler.lower.route import Route
-from sovarc.compiler.maps.geometry import angle_diff, angle_diffs
-from sovarc.compiler.plan import Body
+from sovarc.compiler.vehicles import Body
 from sovarc.dsl.ir import CrashType
-from sovarc.targets.verdict import CRASH_ANGLES  # what every oracle calls frontal
 
 STEP = 0.5  # m between the points compared
 TOUCH = 0.45  # m: lines closer than this meet

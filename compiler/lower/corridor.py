@@ -12,13 +12,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.frame import Band
+from sovarc.compiler.geometry.polyline import Polyline, bezier, blend, concat
 from sovarc.compiler.lower import kturn
-from sovarc.compiler.lower.polyline import Polyline, bezier, blend, concat, unit
 from sovarc.compiler.lower.route import Manoeuvre, change_length
-from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
+from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.maps.sites import MEDIAN_MAX
-from sovarc.compiler.plan import CAR
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
@@ -270,7 +272,7 @@ class Drive:
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, self.against)
         forward = lateral * 0.8
-        d, n = unit(heading), unit(heading + turn)
+        d, n = heading_vector(heading), heading_vector(heading + turn)
         p0 = self.line.point(at)
         p1 = (p0[0] + forward * d[0] + lateral * n[0], p0[1] + forward * d[1] + lateral * n[1])
         curve = bezier(p0, heading, p1, heading + turn)
@@ -287,11 +289,11 @@ class Drive:
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, against=False)  # it joins the road on its own side
         back = lateral * 0.8
-        d, n = unit(heading), unit(heading + turn)
+        d, n = heading_vector(heading), heading_vector(heading + turn)
         p1 = self.line.point(at)
         p0 = (p1[0] - back * d[0] + lateral * n[0], p1[1] - back * d[1] + lateral * n[1])
         facing = (heading + turn + 180.0) % 360.0
-        start = (p0[0] - DRIVEWAY * unit(facing)[0], p0[1] - DRIVEWAY * unit(facing)[1])
+        start = (p0[0] - DRIVEWAY * heading_vector(facing)[0], p0[1] - DRIVEWAY * heading_vector(facing)[1])
         curve = bezier(p0, facing, p1, heading)
         tail = self.line.sub(at, self.line.length)
         self.line = concat([Polyline([start, p0]), curve, tail])

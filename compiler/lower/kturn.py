@@ -7,8 +7,8 @@ full right lock until the rear nears the near kerb, stop, forward into the other
 narrower road it takes two more legs (a five-point turn); MAX_LEGS at the most.
 
 The legs are laid out with the kinematic bicycle model, as a car moves at walking pace: the
-centre of its rear axle drives arcs of AXLE_RADIUS (full lock) and the body turns about it.
-The plan's point is the front bumper, `ahead` of the axle along the heading, and the heading
+centre of its rear axle drives arcs of the vehicle model's `axle_radius` (full lock) and the
+body turns about it. The plan's point is the front bumper, `ahead` of the axle along the heading, and the heading
 is the way the body faces (reversing, it moves against it): unlike on every other path, the
 heading is not the tangent of the front bumper's path. The steering turns while the car stands
 (at the kerb and at each change of gear), so that path has a corner there but the car no speed;
@@ -28,12 +28,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point, Polyline
-from sovarc.compiler.lower.uturn import MARGIN, Band, move_across, move_length
-from sovarc.compiler.plan import REAR_OVERHANG, Body
-from sovarc.targets.verdict import LINE_TOLERANCE  # the SUMO oracle's: the body may reach this far over a line
+from sovarc.compiler.crashes import LINE_TOLERANCE  # the SUMO oracle's: the body may reach this far over a line
+from sovarc.compiler.geometry.bodies import Box
+from sovarc.compiler.geometry.frame import Band
+from sovarc.compiler.geometry.polyline import Point, Polyline
+from sovarc.compiler.lower.uturn import MARGIN, move_across, move_length
+from sovarc.compiler.vehicles import Body, model
 
-AXLE_RADIUS = 3.75  # m, the rear axle's centre at full lock: a 10.5 m kerb-to-kerb circle for the plan's car
 UNWIND = 3.0  # m the rear axle travels while the last leg straightens the wheels
 KERB_OVERHANG = LINE_TOLERANCE - 0.05  # m the body may reach past the road's edge (kept in hand: 5 cm)
 MAX_LEGS = 5
@@ -83,13 +84,18 @@ class KLayout:
 
 
 def corners_d(pose: Pose, body: Body) -> tuple[float, float]:
-    """The least and the greatest d of the body's corners at an axle pose."""
-    _, d, theta = pose
-    ahead = body.length * (1.0 - REAR_OVERHANG)
-    back = body.length * REAR_OVERHANG
-    sin, cos = math.sin(theta), math.cos(theta)
-    values = [d + u * sin + v * cos for u in (ahead, -back) for v in (body.width / 2.0, -body.width / 2.0)]
+    """The least and the greatest d of the body's corners at an axle pose: the kernel's box in the
+    band's plane (x = s, y = d; a heading theta left of s is the compass heading 90 - theta there)."""
+    s, d, theta = pose
+    ahead = _ahead(body)
+    front = (s + ahead * math.cos(theta), d + ahead * math.sin(theta))
+    values = [y for _, y in Box.of(body, *front, 90.0 - math.degrees(theta)).corners()]
     return min(values), max(values)
+
+
+def _ahead(body: Body) -> float:
+    """m from the rear axle to the front bumper."""
+    return body.length * (1.0 - model(body).rear_overhang)
 
 
 def _arc(pose: Pose, gear: int, kappa: float, length: float) -> Pose:
@@ -129,7 +135,7 @@ def _leg(road: _Road, pose: Pose, gear: int, kappa: float) -> list[Pose]:
 def _finish(road: _Road, pose: Pose) -> list[Pose] | None:
     """The last leg from `pose`: forward at full lock, then unwinding over UNWIND to end facing back
     (heading pi) and straight, or None when the body would leave the road on the way."""
-    kappa = 1.0 / AXLE_RADIUS
+    kappa = 1.0 / model(road.body).axle_radius
     left = math.pi - pose[2]
     out = [pose]
     arc = left - kappa * UNWIND / 2.0
@@ -155,7 +161,7 @@ def _finish(road: _Road, pose: Pose) -> list[Pose] | None:
 def turn_in_legs(road: _Road, start: Pose, ahead: float) -> Legs | None:
     """Greedy legs from `start` (facing along the band): each forward leg finishes the turn if it
     can, else goes as far as the body stays on the road, and each reverse leg likewise."""
-    kappa = 1.0 / AXLE_RADIUS
+    kappa = 1.0 / model(road.body).axle_radius
     poses, stops, gears = [start], [0], []
     for leg in range(MAX_LEGS):
         here = poses[-1]
@@ -181,7 +187,7 @@ def layout(band: Band, d_from: float, d_to: float, body: Body) -> KLayout | None
     as near `d_from` as that allows; None when no turn of up to MAX_LEGS fits the road."""
     half = body.width / 2.0
     road = _Road(band.right - KERB_OVERHANG, band.left + KERB_OVERHANG, body)
-    ahead = body.length * (1.0 - REAR_OVERHANG)
+    ahead = _ahead(body)
     kerb = band.right + MARGIN + half  # pulled over: the body inside the road, as on any move across
     best: KLayout | None = None
     starts = np.arange(d_from, kerb - 1e-9, -PULL_OVER) if d_from > kerb else np.array([d_from])

@@ -9,11 +9,11 @@ behind or head-on) walks in the vehicle's lane, a little right of its centre lin
 
 from __future__ import annotations
 
-from sovarc.compiler.lower.polyline import Polyline, unit
+from sovarc.compiler.geometry.angles import angle_diff, heading_vector
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower.route import Event, Route, order_stops
 from sovarc.compiler.maps import SiteMatch
-from sovarc.compiler.maps.geometry import angle_diff
-from sovarc.compiler.plan import PEDESTRIAN
+from sovarc.compiler.vehicles import PEDESTRIAN
 from sovarc.dsl.ir import ActionKind, CrashType, Participant
 
 KERB = 12.0  # m from the vehicle's line to where a crossing starts and ends
@@ -46,7 +46,7 @@ def pedestrian_route(
             notes.append(f"{p.id} heading unknown: planned to cross from the right-hand kerb")
         else:
             walk = min(options, key=lambda h: (abs(angle_diff(h, wanted)), h))
-        d = unit(walk)
+        d = heading_vector(walk)
         path = Polyline([(q[0] - KERB * d[0], q[1] - KERB * d[1]), (q[0] + KERB * d[0], q[1] + KERB * d[1])])
     if wanted is not None and abs(angle_diff(path.heading(path.length / 2.0), wanted)) > 60.0:
         notes.append(f"{p.id} walks {path.heading(path.length / 2.0):.0f} degrees, not its reported heading")

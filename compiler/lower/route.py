@@ -12,11 +12,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.plan import Body
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.vehicles import PLANNED, Body
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
-LATERAL_ACCEL = 2.5  # m/s^2: the most a turn may ask (comfortable; it caps speeds in curves)
+LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a turn may ask (the vehicle model's; it caps curve speeds)
 LEAD = 20.0  # m: the least a participant drives before its first action, so that it is seen moving
 CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change

@@ -14,15 +14,16 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
+from sovarc.compiler.geometry.frame import Band
+from sovarc.compiler.geometry.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
-from sovarc.compiler.lower.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
 from sovarc.compiler.lower.swing import Approach, keep_in_lane
-from sovarc.compiler.lower.uturn import Band, choose, too_narrow, u_turn_line
+from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
-from sovarc.compiler.plan import CAR
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 

@@ -34,13 +34,14 @@ from fractions import Fraction
 from typing import Any
 
 import z3
+from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.lower.contact import Contact
 from sovarc.compiler.lower.route import LEAD, Route
-from sovarc.compiler.maps.geometry import angle_diff
+from sovarc.compiler.vehicles import PLANNED
 from sovarc.dsl.ir import ActionKind, CrashType, Role
 
-A_UP = 2.0  # m/s^2, starting from rest
-B_DOWN = 3.0  # m/s^2, braking to rest
+A_UP = PLANNED.start_accel  # m/s^2, starting from rest (the vehicle model's)
+B_DOWN = PLANNED.stop_decel  # m/s^2, braking to rest
 DWELL = 0.5  # s, the least a stop lasts
 NICE_DWELL = 1.5  # s
 V_MIN = {Role.VEHICLE: 1.5, Role.PEDESTRIAN: 0.5}  # m/s while moving

@@ -22,9 +22,11 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Polyline, unit
-from sovarc.compiler.plan import Body
-from sovarc.targets.verdict import LINE_TOLERANCE  # the SUMO oracle's: corners are moved in by it
+from sovarc.compiler.crashes import LINE_TOLERANCE  # the SUMO oracle's: corners are moved in by it
+from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.bodies import corner_array
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.vehicles import PLANNED, Body
 
 MARGIN = 0.15  # m kept in hand, for the synthesized path's small departures from the line
 STEP = 0.25  # m between checked front positions
@@ -32,7 +34,6 @@ AHEAD = (3.0, 4.0, 6.0, 8.0, 10.0, 12.0)  # m before the stop line where a resha
 PAST = (1.0, 2.0, 3.0, 4.0, 6.0, 8.0)  # m after it where it may rejoin the line
 REACH = (0.8, 1.0, 1.2, 1.4)  # its end tangents' length, as a share of its chord
 SAMPLES = 40  # points on a reshaped bend
-MIN_RADIUS = 3.0  # m: a reshaped bend may be tighter than the line's own only down to this
 MAX_SHIFT = 1.0  # m a reshaped bend may lie from the line it replaces
 BEHIND = 10.0  # m an approach lane is extended back before its start
 
@@ -73,7 +74,7 @@ class Approach:
         poses = poses[self.before_stop(poses[:, :2])]
         if not len(poses):
             return -math.inf
-        corners = _corners(poses, body)
+        corners = corner_array(poses, body.length, body.width, shrink=LINE_TOLERANCE)
         outside = np.min([line.distances(corners) - half for line, half in self.lanes], axis=0)
         return float(outside.max())
 
@@ -98,7 +99,7 @@ def keep_in_lane(
     piece = line.sub(lo, min(line.length, approach.stop + max(PAST) + 3.0))
     here = Approach(approach.stop - lo, approach.lanes)
     span = (here.stop - max(AHEAD) - 1.0, here.stop + max(PAST) + 1.0)
-    floor = min(_tightest(piece, *span), MIN_RADIUS)
+    floor = min(_tightest(piece, *span), PLANNED.path_radius)  # a reshaped bend may be tighter only down to it
     ends = {s: _end(piece, s) for s in [here.stop - a for a in AHEAD] + [here.stop + p for p in PAST]}
     best: tuple[float, float, float, float] | None = None
     for ahead, past, reach in itertools.product(AHEAD, PAST, REACH):
@@ -166,19 +167,6 @@ def _points(line: Polyline, at: np.ndarray) -> np.ndarray:
     return np.column_stack([np.interp(at, line.s, line.points[:, 0]), np.interp(at, line.s, line.points[:, 1])])
 
 
-def _corners(poses: np.ndarray, body: Body) -> np.ndarray:
-    """The four corners of each body (front at the pose), each face moved in by LINE_TOLERANCE."""
-    rad = np.radians(poses[:, 2])
-    forward = np.column_stack([np.sin(rad), np.cos(rad)])
-    right = np.column_stack([np.cos(rad), -np.sin(rad)])
-    half = body.width / 2.0 - LINE_TOLERANCE
-    out = []
-    for back in (LINE_TOLERANCE, body.length - LINE_TOLERANCE):
-        for side in (half, -half):
-            out.append(poses[:, :2] - back * forward + side * right)
-    return np.vstack(out)
-
-
 def _shift(line: Polyline, new: Polyline, start: float, end: float) -> float:
     """How far `new` (which replaces `line` from `start` to `end`) lies from it there."""
     return float(line.sub(start, end).distances(new.sub(start, end + new.length - line.length).points).max())
@@ -225,10 +213,10 @@ def _quintic(
     )
     terms = (
         np.asarray(p0),
-        tangent * np.asarray(unit(h0)),
-        k0 * tangent**2 * np.asarray(unit(h0 + 90.0)),
-        k1 * tangent**2 * np.asarray(unit(h1 + 90.0)),
-        tangent * np.asarray(unit(h1)),
+        tangent * np.asarray(heading_vector(h0)),
+        k0 * tangent**2 * np.asarray(heading_vector(h0 + 90.0)),
+        k1 * tangent**2 * np.asarray(heading_vector(h1 + 90.0)),
+        tangent * np.asarray(heading_vector(h1)),
         np.asarray(p1),
     )
     return sum((b * t for b, t in zip(basis, terms, strict=True)), np.zeros((SAMPLES, 2)))

@@ -7,15 +7,16 @@ centre on the side the car comes from, and its front outer corner R + w/2 on the
 A U-turn therefore needs R + w/2 + sqrt((R + w/2)^2 + L^2) of road across (11.6 m for a
 4.6 x 1.8 m car at R = 4 m), and begins far enough from the kerb for the rear to stay on it.
 
-The turn is laid out across the road, in a `Band`: s along the right-most lane of the
-direction the car comes from, d to the left of it. The car moves over from its lane to d0
-(as far as the rear's swing needs), turns on a half circle to d1 = d0 + 2R, facing back,
-and ends in its lane: R is chosen so that d1 is that lane when the road lets it, else it is
-MIN_RADIUS or the widest the road holds, and a move across after the half circle reaches
-the lane. A move across swings the trailing rear the other way, so each is long enough to
-keep it on the road. On a road narrower than the tightest turn the layout says it does not
-fit: on a straight road the caller turns in legs instead (kturn.py), at a junction it reports
-the site unsatisfiable (`too_narrow`).
+The turn is laid out across the road, in a `Band` (the road frame, compiler/geometry/frame.py):
+s along the right-most lane of the direction the car comes from, d to the left of it. The car
+moves over from its lane to d0 (as far as the rear's swing needs), turns on a half circle to
+d1 = d0 + 2R, facing back, and ends in its lane: R is chosen so that d1 is that lane when the
+road lets it, else it is the tightest (the vehicle model's `front_radius`, full lock) or the
+widest the road holds, and a move across after the half circle reaches the lane. A move across
+swings the trailing rear the other way, so each is long enough to keep it on the road. On a
+road narrower than the tightest turn the layout says it does not fit: on a straight road the
+caller turns in legs instead (kturn.py), at a junction it reports the site unsatisfiable
+(`too_narrow`).
 """
 
 from __future__ import annotations
@@ -25,66 +26,17 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point, Polyline, unit
-from sovarc.compiler.maps import LaneInfo
-from sovarc.compiler.plan import Body
+from sovarc.compiler.geometry.bodies import Box
+from sovarc.compiler.geometry.frame import Band
+from sovarc.compiler.geometry.polyline import Point, Polyline
+from sovarc.compiler.vehicles import Body, model
 from sovarc.dsl.errors import Diagnostic, UnsatError
 
-MIN_RADIUS = 4.0  # m, the front bumper's path at full lock (a car's 10-11 m kerb-to-kerb turning circle)
 MARGIN = 0.2  # m the body keeps from the road's edges
 SHIFT = 6.0  # m of road per metre moved across before and after the half circle
 MIN_SHIFT = 15.0  # m: the shortest move across (a short one swings the rear out)
 MAX_SHIFT = 60.0  # m: the longest
 NEAR = 1.0  # m: a half circle ending this close to the preferred lane turns into it
-TANGENT = 5.0  # m either side over which the band's direction is measured (curved roads)
-
-
-@dataclass(frozen=True)
-class Band:
-    """A road across: `base` runs along its right-most lane (in the car's first direction of
-    travel), d is metres to the left of that lane's centre, from `right` to `left` (its edges)."""
-
-    base: Polyline
-    right: float
-    left: float
-
-    @classmethod
-    def across(cls, own: Sequence[LaneInfo], other: Sequence[LaneInfo]) -> Band:
-        """The road whose lanes in the car's direction are `own` (right-most first), `other` the rest."""
-        right = -own[0].width / 2.0
-        width = sum(lane.width for lane in own) + sum(lane.width for lane in other)
-        return cls(Polyline(own[0].shape), right, right + width)
-
-    def _axes(self, s: float) -> tuple[Point, Point, Point]:
-        """The base's point at s (clamped), its direction and its left normal there."""
-        a = self.base.point(s - TANGENT)
-        b = self.base.point(s + TANGENT)
-        h = math.degrees(math.atan2(b[0] - a[0], b[1] - a[1]))
-        return self.base.point(s), unit(h), unit(h - 90.0)
-
-    def at(self, s: float, d: float) -> Point:
-        """The point d to the left of the base at arc length s (straight on past its ends)."""
-        inside = min(max(s, 0.0), self.base.length)
-        q, f, n = self._axes(inside)
-        extra = s - inside
-        return (q[0] + extra * f[0] + d * n[0], q[1] + extra * f[1] + d * n[1])
-
-    def heading(self, s: float) -> float:
-        """The compass heading of the band's direction at arc length s (clamped to the base)."""
-        _, f, _ = self._axes(min(max(s, 0.0), self.base.length))
-        return math.degrees(math.atan2(f[0], f[1])) % 360.0
-
-    def place(self, p: Point) -> tuple[float, float]:
-        """(s, d) of a point."""
-        s, _ = self.base.project(p)
-        q, f, n = self._axes(s)
-        v = (p[0] - q[0], p[1] - q[1])
-        along = v[0] * f[0] + v[1] * f[1]
-        return s + (along if s <= 1e-9 or s >= self.base.length - 1e-9 else 0.0), v[0] * n[0] + v[1] * n[1]
-
-    def d_abreast(self, line: Polyline, p: Point) -> float:
-        """The d of `line` (a lane's centre) where it is abreast of the point p."""
-        return self.place(line.point(line.project(p)[0]))[1]
 
 
 @dataclass(frozen=True)
@@ -109,18 +61,19 @@ def _start_range(band: Band, radius: float, body: Body) -> tuple[float, float]:
 def layout(band: Band, d_from: float, d_to: float, body: Body) -> Layout:
     """The half circle from lane position `d_from` that ends at `d_to` if the road lets it
     (moving over first as far as the rear's swing needs), else the roundest that fits: one
-    no tighter than MIN_RADIUS, and then a move across to `d_to` after it."""
+    no tighter than the front bumper's path at full lock, and then a move across to `d_to` after it."""
+    tightest = model(body).front_radius
     widest = _widest(band, body)
     if widest is None:  # too narrow even at the tightest: overhang both edges alike
-        low, high = _start_range(band, MIN_RADIUS, body)
+        low, high = _start_range(band, tightest, body)
         d0 = (low + high) / 2.0
-        return Layout(MIN_RADIUS, d0, d0 + 2.0 * MIN_RADIUS, False)
+        return Layout(tightest, d0, d0 + 2.0 * tightest, False)
 
     def start(radius: float) -> float:
         low, high = _start_range(band, radius, body)
         return min(max(d_from, low), high)
 
-    lo, hi = MIN_RADIUS, widest
+    lo, hi = tightest, widest
     if start(lo) + 2.0 * lo >= d_to:
         hi = lo
     elif start(hi) + 2.0 * hi <= d_to:
@@ -140,10 +93,11 @@ def layout(band: Band, d_from: float, d_to: float, body: Body) -> Layout:
 
 
 def _widest(band: Band, body: Body) -> float | None:
-    """The widest radius whose half circle fits the road (None: not even MIN_RADIUS)."""
-    if not _fits(band, MIN_RADIUS, body):
+    """The widest radius whose half circle fits the road (None: not even the tightest, at full lock)."""
+    tightest = model(body).front_radius
+    if not _fits(band, tightest, body):
         return None
-    lo, hi = MIN_RADIUS, max(MIN_RADIUS, band.left - band.right)
+    lo, hi = tightest, max(tightest, band.left - band.right)
     for _ in range(30):
         mid = (lo + hi) / 2.0
         lo, hi = (mid, hi) if _fits(band, mid, body) else (lo, mid)
@@ -245,12 +199,7 @@ def corner_span(line: Polyline, at: np.ndarray, headings: np.ndarray, band: Band
     lengths `at`, facing `headings` (compass degrees; the line's own, or those of a turn in legs)."""
     low, high = math.inf, -math.inf
     for s, heading in zip(at, headings, strict=True):
-        front = line.point(float(s))
-        f = unit(float(heading))
-        left = (-f[1], f[0])
-        for back in (0.0, body.length):
-            for side in (-body.width / 2.0, body.width / 2.0):
-                corner = (front[0] - back * f[0] + side * left[0], front[1] - back * f[1] + side * left[1])
-                d = band.place(corner)[1]
-                low, high = min(low, d), max(high, d)
+        for corner in Box.of(body, *line.point(float(s)), float(heading)).corners():
+            d = band.place(corner)[1]
+            low, high = min(low, d), max(high, d)
     return low, high

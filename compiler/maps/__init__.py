@@ -1,6 +1,7 @@
 """The map layer: load a road network, find its candidate sites, and match a scenario onto them.
 
 road_map = load_map("town.net.xml")              # or an OpenDRIVE .xodr, through netconvert
+network = with_opendrive(road_map.network)   # the map in both formats, as plans carry it
 sites = find_sites(road_map, RoadKind.T_JUNCTION)
 matches = match_sites(scenario, road_map, n=3, seed=0)
 """
@@ -8,6 +9,7 @@ matches = match_sites(scenario, road_map, n=3, seed=0)
 from sovarc.compiler.maps.load import RoadMap, load_map
 from sovarc.compiler.maps.needs import Need, scenario_needs
 from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive
+from sovarc.compiler.maps.networks import network_of, with_opendrive
 from sovarc.compiler.maps.search import Placement, SiteMatch, match_site, match_sites, pick_diverse, site_rotations
 from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites
 
@@ -26,7 +28,9 @@ __all__ = [
     "load_map",
     "match_site",
     "match_sites",
+    "network_of",
     "pick_diverse",
     "scenario_needs",
     "site_rotations",
+    "with_opendrive",
 ]

@@ -1,6 +1,7 @@
 """Reading a road network: SUMO `.net.xml` directly, OpenDRIVE `.xodr` through netconvert.
 
-sumolib (and netconvert, for OpenDRIVE) are imported or run only here, when a map is loaded.
+sumolib is imported only here, when a map is loaded; an OpenDRIVE map is read from its cached
+conversion (networks.py), which is also the network its plans carry.
 """
 
 from __future__ import annotations
@@ -8,14 +9,15 @@ from __future__ import annotations
 import hashlib
 import os
 import re
-import tempfile
 import xml.sax
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, NoReturn
 from xml.etree import ElementTree
 
-from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive, netconvert_version
+from sovarc.compiler.maps.netconvert import ToolError, netconvert_version
+from sovarc.compiler.maps.networks import network_of
+from sovarc.compiler.plan import Network
 from sovarc.dsl.errors import Diagnostic, InputError
 from sovarc.dsl.span import Span
 
@@ -36,7 +38,8 @@ class RoadMap:
     """A loaded road network and where it came from.
 
     `made_by` names the program that wrote the file the user gave (or 'unknown');
-    `converted_by` is netconvert's name and version when an OpenDRIVE file was converted.
+    `converted_by` is netconvert's name and version when an OpenDRIVE file was converted;
+    `network` is what its plans carry: the SUMO network `net` was read from, and the OpenDRIVE map.
     """
 
     path: Path
@@ -45,6 +48,7 @@ class RoadMap:
     made_by: str
     converted_by: str | None
     net: Net
+    network: Network
     cache: dict[Any, Any] = field(default_factory=dict, repr=False)  # find_sites' results, per min_length
 
     @property
@@ -62,13 +66,11 @@ def load_map(path: str | os.PathLike[str]) -> RoadMap:
         kind = "a SUMO network" if fmt == "sumo" else "an OpenDRIVE file"
         _fail(source, f"not {kind}: its root element is <{root}>, expected <{ROOTS[fmt]}>")
     digest = hashlib.sha256(data).hexdigest()
+    network = network_of(source, digest)
+    net = _read_net(Path(network.sumo), source)
     if fmt == "sumo":
-        return RoadMap(source, fmt, digest, _generator(data), None, _read_net(source, source))
-    with tempfile.TemporaryDirectory(prefix="sovarc-map-") as tmp:
-        converted = Path(tmp) / (source.stem + ".net.xml")
-        convert_opendrive(source, converted)
-        net = _read_net(converted, source)
-    return RoadMap(source, fmt, digest, _opendrive_origin(rest), netconvert_version(), net)
+        return RoadMap(source, fmt, digest, _generator(data), None, net, network)
+    return RoadMap(source, fmt, digest, _opendrive_origin(rest), netconvert_version(), net, network)
 
 
 def _fail(source: Path, message: str) -> NoReturn:

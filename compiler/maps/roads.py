@@ -19,7 +19,8 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
-from sovarc.compiler.maps.geometry import Shape, angle_diff, end_heading, shape_length, start_heading
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.polyline import Shape, end_heading, shape_length, start_heading
 
 CAR = "passenger"  # the SUMO vehicle class a site's lanes must allow
 TINY = 2.0  # m: an edge this short (netconvert leaves some between lane sections) does not split a road

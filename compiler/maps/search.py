@@ -24,7 +24,7 @@ import random
 from collections import Counter
 from dataclasses import dataclass
 
-from sovarc.compiler.maps.geometry import angle_diff
+from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.needs import HEADING_DEGREES, JUNCTION_MOVES, Need, scenario_needs
 from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites

@@ -27,7 +27,8 @@ import statistics
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from sovarc.compiler.maps.geometry import Point, end_heading, fit_frame, start_heading
+from sovarc.compiler.geometry.polyline import Point, end_heading, start_heading
+from sovarc.compiler.maps.geometry import fit_frame
 from sovarc.compiler.maps.roads import CAR, LaneInfo, NodeArm, RoadNet, axis
 from sovarc.compiler.maps.straights import MEDIAN_MAX as MEDIAN_MAX  # lowering's median rule
 from sovarc.compiler.maps.straights import straight_sites

@@ -15,7 +15,8 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
-from sovarc.compiler.maps.geometry import Point, fit_frame, heading_between, point_at, shape_length
+from sovarc.compiler.geometry.polyline import Point, heading_between, point_at, shape_length
+from sovarc.compiler.maps.geometry import fit_frame
 from sovarc.compiler.maps.roads import LaneInfo, RoadNet, cumulative, cut, is_road, project, project_many
 from sovarc.dsl.ir import RoadKind
 

@@ -1,7 +1,6 @@
 """Trajectory synthesis: OMPL paths, Ruckig timing, TOPP-RA checks; a lowered scenario becomes a Plan.
 
 plan = synthesize(lowered, step=0.1, seed=0)
-plan = synthesize_first(stagings_on(staged, match, road_map, notes))  # the first staging it accepts
 
 Each participant's route becomes a Dubins path (paths.py; the legs of a three-point turn are
 driven as lowering laid them out, legs.py), its solved schedule a jerk-limited arc-length
@@ -15,7 +14,6 @@ the crash type needs (impact.py).
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 
 import numpy as np
 from sovarc.compiler.lower import Lowered
@@ -50,8 +48,7 @@ def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
     point = _point_at(striker, impact_time)
     plan = Plan(
         scenario=lowered.scenario,
-        map=str(lowered.road_map.path),
-        map_sha256=lowered.road_map.sha256,
+        network=lowered.road_map.network,
         site=lowered.match.site.id,
         kind=lowered.match.site.kind,
         rotation=lowered.match.rotation,
@@ -63,19 +60,6 @@ def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
     )
     check_impact(plan)
     return plan
-
-
-def synthesize_first(candidates: Iterable[Lowered], *, seed: int = 0) -> Plan:
-    """The plan of the first candidate synthesis accepts: one it refuses gives way to the next
-    (another contact, staging or rotation of the site). All refused: the first refusal."""
-    first: SynthesisError | None = None
-    for lowered in candidates:
-        try:
-            return synthesize(lowered, seed=seed)
-        except SynthesisError as error:
-            first = first or error
-    assert first is not None, "lowering yields a staging or raises"
-    raise first
 
 
 def _trajectory(

@@ -5,15 +5,15 @@ the lines; the oracle measures it between the headings of the bodies where they 
 crossing these differ: a front corner touches before the bumper centres meet, earlier in a turn,
 and the synthesized path turns a little off the lane line. Crossings lowered at 100-101 degrees
 first touched at 99 in SUMO. So each plan is judged here with the oracle's own measurement
-(targets/sumo/impact.py) on its samples, which the replay puts SUMO's bodies on; a plan the
+(compiler/crashes.py) on its samples, which the replay puts SUMO's bodies on; a plan the
 oracle would fail is refused, and the next staging is tried.
 """
 
 from __future__ import annotations
 
+from sovarc.compiler.crashes import face_words, fits, needs, planned_touch
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.errors import Diagnostic, SynthesisError
-from sovarc.targets.sumo.impact import face_words, fits, needs, planned_touch
 
 
 def check_impact(plan: Plan) -> None:

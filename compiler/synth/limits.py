@@ -17,8 +17,9 @@ import numpy as np
 import toppra
 import toppra.algorithm
 import toppra.constraint
+from sovarc.compiler.vehicles import PLANNED
 
-ACCEL_LIMIT = 4.5  # m/s^2 per axis: firm braking, and a sharp but possible turn
+ACCEL_LIMIT = PLANNED.plan_accel  # m/s^2 per axis: firm braking, and a sharp but possible turn
 GRID = 60  # gridpoints along the path
 SAME_POINT = 1e-3  # m; closer points are one (the spline needs increasing arc lengths)
 

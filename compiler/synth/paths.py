@@ -18,10 +18,12 @@ from dataclasses import dataclass
 
 import numpy as np
 from ompl import base as ob
-from sovarc.compiler.lower.polyline import Polyline
+from sovarc.compiler.geometry.angles import compass
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.vehicles import PLANNED
 
 WAYPOINT_STEP = 4.0  # m
-MIN_RADIUS = 3.0  # m; a tight junction corner
+MIN_RADIUS = PLANNED.path_radius  # m; a tight junction corner (the vehicle model's)
 RADIUS_STEP = 1.08  # turning radii come in classes this far apart (a space per class)
 TIGHTER_STEPS = 4  # classes skipped per retry when a curve does not fit
 MAX_RADIUS = 2000.0
@@ -185,7 +187,7 @@ def _interpolate(
 def _tangent(line: Polyline, s: float) -> float:
     """Compass heading of the chord over +-1 m: smoother than a single segment's."""
     a, b = line.point(max(0.0, s - 1.0)), line.point(min(line.length, s + 1.0))
-    return math.degrees(math.atan2(b[0] - a[0], b[1] - a[1])) % 360.0
+    return compass(b[0] - a[0], b[1] - a[1])
 
 
 def _yaw(compass: float) -> float:

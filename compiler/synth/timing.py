@@ -16,8 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 from sovarc.compiler.lower.solve import A_UP, B_DOWN, LegValues
+from sovarc.compiler.vehicles import PLANNED
 
-MAX_ACCEL = 4.5  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
+MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
 MAX_JERK = 12.0  # m/s^3
 
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from sovarc.compiler.plan import Body
+from sovarc.compiler.vehicles import CAR_MODEL, Body, model
 
-MAX_ACCEL = 4.0  # m/s²
-MAX_BRAKE = 8.0  # m/s², about the grip of dry asphalt
+MAX_ACCEL = CAR_MODEL.drive_accel  # m/s² (the vehicle model's)
+MAX_BRAKE = CAR_MODEL.drive_brake  # m/s², about the grip of dry asphalt
 MAX_STEER = 0.6  # rad
 MAX_SPEED = 50.0  # m/s
 SUBSTEPS = 2  # integration steps per communication step
@@ -28,9 +28,10 @@ class Geometry:
 
     @classmethod
     def of(cls, body: Body) -> Geometry:
-        """A passenger car's proportions: wheelbase 60 % of the length, overhangs equal."""
-        wheelbase = 0.6 * body.length
-        return cls(body.length, body.width, wheelbase, wheelbase + 0.2 * body.length)
+        """The vehicle model's bicycle proportions (a car: wheelbase 60 % of the length, overhangs equal)."""
+        kind = model(body)
+        wheelbase = kind.drive_wheelbase * body.length
+        return cls(body.length, body.width, wheelbase, wheelbase + kind.drive_overhang * body.length)
 
 
 @dataclass(frozen=True)

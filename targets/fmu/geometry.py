@@ -1,7 +1,8 @@
-"""Bodies on the ground: overlap of two oriented rectangles, and time to collision between moving bodies.
+"""Time to collision between moving bodies, approximated by discs (the FMU oracle's near misses).
 
 A pose is (x, y, compass heading) of the map's reference point: the front-bumper centre of a
-vehicle, the centre of a pedestrian.
+vehicle, the centre of a pedestrian. Whether two bodies overlap, and their corners, are the
+geometry kernel's (compiler/geometry/bodies.py); the discs here only estimate how soon they may.
 """
 
 from __future__ import annotations
@@ -9,44 +10,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from sovarc.compiler.plan import Body
+from sovarc.compiler.vehicles import Body
 
 TTC_HORIZON = 5.0  # s: beyond this, no collision is imminent
 TICK = 0.1  # s between predicted poses
-
-
-def centre(x: float, y: float, heading: float, body: Body) -> tuple[float, float]:
-    """The centre of a body whose reference point is at (x, y)."""
-    if body.vclass == "pedestrian":
-        return (x, y)
-    rad = math.radians(heading)
-    back = body.length / 2.0
-    return (x - back * math.sin(rad), y - back * math.cos(rad))
-
-
-def corners(x: float, y: float, heading: float, body: Body) -> list[tuple[float, float]]:
-    cx, cy = centre(x, y, heading, body)
-    rad = math.radians(heading)
-    fx, fy = math.sin(rad), math.cos(rad)  # forward
-    rx, ry = fy, -fx  # right
-    hl, hw = body.length / 2.0, body.width / 2.0
-    return [
-        (cx + a * hl * fx + b * hw * rx, cy + a * hl * fy + b * hw * ry)
-        for a, b in ((1, 1), (1, -1), (-1, -1), (-1, 1))
-    ]
-
-
-def overlap(a: list[tuple[float, float]], b: list[tuple[float, float]]) -> bool:
-    """Two convex quadrilaterals overlap (separating-axis test; touching counts)."""
-    for poly in (a, b):
-        for k in range(4):
-            (x1, y1), (x2, y2) = poly[k], poly[(k + 1) % 4]
-            nx, ny = y2 - y1, x1 - x2
-            pa = [nx * x + ny * y for x, y in a]
-            pb = [nx * x + ny * y for x, y in b]
-            if max(pa) < min(pb) or max(pb) < min(pa):
-                return False
-    return True
 
 
 def _discs(cx: np.ndarray, cy: np.ndarray, heading: np.ndarray, body: Body) -> tuple[np.ndarray, np.ndarray, float]:

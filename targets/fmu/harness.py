@@ -18,11 +18,12 @@ import time as clock
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point
-from sovarc.compiler.plan import Body, Plan, Sample, Trajectory
+from sovarc.compiler.geometry.bodies import Box, overlap
+from sovarc.compiler.geometry.polyline import Point
+from sovarc.compiler.plan import Plan, Sample, Trajectory
+from sovarc.compiler.vehicles import Body
 from sovarc.targets.fmu.bicycle import Geometry, State, advance
 from sovarc.targets.fmu.driver import Driver
-from sovarc.targets.fmu.geometry import centre, corners, overlap
 from sovarc.targets.fmu.interface import MAX_OBJECTS, PERCEPTION_RANGE, STEP
 from sovarc.targets.fmu.task import EgoTask, make_task, to_ego_frame
 from sovarc.targets.fmu.world import World
@@ -154,22 +155,12 @@ def _first_contact(
     ego: str, poses: dict[str, tuple[float, float, float, float]], bodies: dict[str, Body]
 ) -> str | None:
     ex, ey, eh, _ = poses[ego]
-    mine = bodies[ego]
-    ecx, ecy = centre(ex, ey, eh, mine)
-    box = None
+    mine = Box.of(bodies[ego], ex, ey, eh)
     for name in sorted(poses):
         if name == ego:
             continue
         x, y, h, _ = poses[name]
-        other = bodies[name]
-        cx, cy = centre(x, y, h, other)
-        if (
-            math.hypot(cx - ecx, cy - ecy)
-            > (math.hypot(mine.length, mine.width) + math.hypot(other.length, other.width)) / 2
-        ):
-            continue
-        box = box or corners(ex, ey, eh, mine)
-        if overlap(box, corners(x, y, h, other)):
+        if overlap(mine, Box.of(bodies[name], x, y, h)):
             return name
     return None
 
@@ -186,12 +177,12 @@ def _inputs(
     values = [ex, ey, eh, ev, task.target_speed(s), task.goal - s]
     for px, py in task.path_points(s, ex, ey, eh):
         values += [px, py]
-    ecx, ecy = centre(ex, ey, eh, bodies[ego])
+    ecx, ecy = Box.of(bodies[ego], ex, ey, eh).centre
     seen = []
     for name, (x, y, h, v) in poses.items():
         if name == ego:
             continue
-        cx, cy = centre(x, y, h, bodies[name])
+        cx, cy = Box.of(bodies[name], x, y, h).centre
         distance = math.hypot(cx - ecx, cy - ecy)
         if distance <= PERCEPTION_RANGE:
             seen.append((distance, name, cx, cy, h, v))

@@ -23,13 +23,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.bodies import Box, overlap
 from sovarc.compiler.plan import Plan
 from sovarc.targets.fmu.geometry import (
     TTC_HORIZON,
     Future,
-    centre,
-    corners,
-    overlap,
     straight_on,
     ticks,
     time_to_collision,
@@ -149,13 +148,13 @@ def _contact_kind(run: Run) -> str:
     ego, other = run.ego_track, run.tracks[run.contact.other]
     if other.body.vclass == "pedestrian":
         return "pedestrian"
-    turn = abs(((float(other.heading[-1]) - float(ego.heading[-1]) + 180.0) % 360.0) - 180.0)
+    turn = abs(angle_diff(float(other.heading[-1]), float(ego.heading[-1])))
     if turn >= 150.0:
         return "head_on"
     if turn > 30.0:
         return "angle"
-    ox, oy = centre(float(other.x[-1]), float(other.y[-1]), float(other.heading[-1]), other.body)
-    ex, ey = centre(float(ego.x[-1]), float(ego.y[-1]), float(ego.heading[-1]), ego.body)
+    ox, oy = Box.of(other.body, float(other.x[-1]), float(other.y[-1]), float(other.heading[-1])).centre
+    ex, ey = Box.of(ego.body, float(ego.x[-1]), float(ego.y[-1]), float(ego.heading[-1])).centre
     ahead, _ = to_ego_frame(ox, oy, ex, ey, float(ego.heading[-1]))
     return "rear_end" if ahead > 0.0 else "struck_from_behind"
 
@@ -195,8 +194,8 @@ def _blocked(run: Run) -> str | None:
         track = run.tracks[name]
         if name == run.ego or float(track.speed[-1]) > max(speed, MOVING) + HELD_UP:
             continue
-        box = corners(float(track.x[-1]), float(track.y[-1]), float(track.heading[-1]), track.body)
-        if any(overlap(corners(x, y, h, ego.body), box) for x, y, h in poses):
+        box = Box.of(track.body, float(track.x[-1]), float(track.y[-1]), float(track.heading[-1]))
+        if any(overlap(Box.of(ego.body, x, y, h), box) for x, y, h in poses):
             return name
     return None
 

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from sovarc.compiler.plan import Plan
 from sovarc.targets.fmu.interface import EgoFmu
+from sovarc.targets.fmu.render import render_run
 from sovarc.targets.fmu.runner import Method, TestResult, run_test_results
 from sovarc.targets.verdict import Verdict
 
@@ -45,8 +46,6 @@ def write_results(results: list[TestResult], out_dir: Path, *, pictures: bool = 
         path.write_text(result.verdict.dumps(), encoding="utf-8")
         written.append(path)
         if pictures:
-            from sovarc.targets.fmu.render import render_run
-
             written.append(render_run(result.run, result.verdict, out_dir / f"{name}.png"))
     return written
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sovarc.targets.fmu.geometry import corners
+import numpy as np
+from sovarc.compiler.geometry.bodies import Box
 from sovarc.targets.fmu.harness import Run
 from sovarc.targets.verdict import Verdict
 
@@ -14,6 +15,7 @@ EGO_COLOUR = "#1f77b4"
 
 
 def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
+    # matplotlib loads here, not with the module: it is slow to import and only a run's picture needs it.
     import matplotlib
 
     matplotlib.use("Agg")
@@ -35,7 +37,8 @@ def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
             colour = EGO_COLOUR if name == run.ego else NPC_COLOURS[(k - 1) % len(NPC_COLOURS)]
             label = f"{name} (ego)" if name == run.ego else name
             ax.plot(track.x, track.y, color=colour, linewidth=2 if name == run.ego else 1.2, zorder=3, label=label)
-            box = corners(float(track.x[-1]), float(track.y[-1]), float(track.heading[-1]), track.body)
+            box = Box.of(track.body, float(track.x[-1]), float(track.y[-1]), float(track.heading[-1])).corners()
+            box = box[3:] + box[:3]  # from the front-right corner, as the pictures were always drawn
             ax.add_patch(Polygon(box, closed=True, facecolor=colour, edgecolor="black", alpha=0.8, zorder=4))
         if run.contact is not None:
             ego = run.ego_track
@@ -56,8 +59,6 @@ def render_run(run: Run, verdict: Verdict, out: Path) -> Path:
 
 def _frame(ax: object, run: Run) -> None:
     """Zoom onto the tracks with a margin."""
-    import numpy as np
-
     xs = np.concatenate([t.x for t in run.tracks.values()])
     ys = np.concatenate([t.y for t in run.tracks.values()])
     centre_x, centre_y = (xs.min() + xs.max()) / 2.0, (ys.min() + ys.max()) / 2.0

@@ -2,15 +2,14 @@
 
 `run_tests(plan)` makes one test per vehicle participant (a pedestrian is never the ego: the ego is a
 driving system; nor is a vehicle whose plan reverses, in a three-point turn: the ego interface drives
-forward only, INTERFACE.md) and judges each. With `method="random"` the NPCs of each test are replaced by random
-but plausible ones on the same site (the paper's "Random" baseline; see baseline.py).
+forward only, INTERFACE.md) and judges each. `tests` gives, per ego, another plan for its test: the random
+baseline's, whose NPCs are random but plausible on the same site (sovarc.compiler.evaluation.baseline), run
+with `method="random"`.
 """
 
 from __future__ import annotations
 
-import tempfile
-from collections.abc import Iterator
-from contextlib import contextmanager
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
@@ -53,37 +52,23 @@ def run_tests(
 
 
 def run_test_results(
-    plan: Plan, ego_fmu: str | Path | EgoFmu | None = None, seed: int = 0, *, method: Method = "report"
+    plan: Plan,
+    ego_fmu: str | Path | EgoFmu | None = None,
+    seed: int = 0,
+    *,
+    method: Method = "report",
+    tests: Mapping[str, Plan] | None = None,
 ) -> list[TestResult]:
-    """Like run_tests, with each test's run (for pictures and measurements)."""
+    """Like run_tests, with each test's run (for pictures and measurements); `tests` maps an ego to the
+    plan its test runs (default: `plan` for every ego)."""
     ego = ego_fmu if isinstance(ego_fmu, EgoFmu) else validate_fmu(ego_fmu or reference_fmu())
     results = []
-    with _net_file(plan.map) as net, Driver(ego) as driver:
+    net = Path(plan.network.sumo)  # the network the plan was planned on (an OpenDRIVE map's conversion)
+    with Driver(ego) as driver:
         for name in egos(plan):
-            test_plan = plan if method == "report" else _random_plan(plan, name, seed)
+            test_plan = plan if tests is None else tests[name]
             with World(net, STEP, seed) as world:
                 run = run_test(test_plan, name, driver, world)
             verdict = judge(run, test_plan, seed=seed, fmu=ego.model_name, method=method)
             results.append(TestResult(verdict, run, test_plan))
     return results
-
-
-def _random_plan(plan: Plan, ego: str, seed: int) -> Plan:
-    from sovarc.targets.fmu.baseline import random_npcs
-
-    return random_npcs(plan, ego, seed)
-
-
-@contextmanager
-def _net_file(map_path: str) -> Iterator[Path]:
-    """The SUMO network of the plan's map (an OpenDRIVE map is converted as the map layer does)."""
-    path = Path(map_path)
-    if not path.name.lower().endswith(".xodr"):
-        yield path
-        return
-    from sovarc.compiler.maps.netconvert import convert_opendrive
-
-    with tempfile.TemporaryDirectory(prefix="sovarc-fmu-map-") as tmp:
-        net = Path(tmp) / (path.stem + ".net.xml")
-        convert_opendrive(path, net)
-        yield net

@@ -18,7 +18,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Point, Polyline, unit
+from sovarc.compiler.geometry.angles import angle_diff, heading_vector
+from sovarc.compiler.geometry.polyline import Point, Polyline
 from sovarc.compiler.plan import Plan, Sample, Trajectory
 from sovarc.targets.fmu.interface import PATH_POINTS, PATH_SPACING
 
@@ -101,7 +102,7 @@ def extended(line: Polyline, extra: float, towards: Sequence[Point] = ()) -> Pol
     """The line, then `towards` (points beyond its end, e.g. a lane's centre line), then `extra` m straight on."""
     points = [tuple(p) for p in line.points] + [tuple(p) for p in towards]
     tail = Polyline(points, min_gap=PATH_GAP)
-    end, (dx, dy) = tail.point_at(tail.length), unit(tail.heading(tail.length))
+    end, (dx, dy) = tail.point_at(tail.length), heading_vector(tail.heading(tail.length))
     points.append((end[0] + extra * dx, end[1] + extra * dy))
     return Polyline(points, min_gap=PATH_GAP)
 
@@ -143,7 +144,7 @@ def _continuation(trajectory: Trajectory, planned: Polyline, lane_shapes: LaneSh
             continue
         line = Polyline(shape, min_gap=PATH_GAP)
         s, dist = line.project_within(end, 0.0, line.length)
-        turn = abs((line.heading(s) - heading + 180.0) % 360.0 - 180.0)
+        turn = abs(angle_diff(line.heading(s), heading))
         if dist <= JOIN_REACH and turn <= JOIN_TURN and (best is None or dist < best[0]):
             best = (dist, line, s)
     if best is None:

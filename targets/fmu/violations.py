@@ -11,8 +11,9 @@ the ego's route where it failed), so that report-derived and random tests are so
 from __future__ import annotations
 
 import numpy as np
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.bodies import Box
 from sovarc.compiler.plan import Plan
-from sovarc.targets.fmu.geometry import centre
 from sovarc.targets.fmu.harness import Run
 from sovarc.targets.fmu.task import to_ego_frame
 
@@ -50,10 +51,10 @@ def violation(run: Run, plan: Plan, failure: str, other: str | None, time: float
         actions = {s.action.split(":")[-1] for s in plan.trajectory(other).segments}
         if actions & ENTERING:
             return "entering"
-    apart = abs((float(them.heading[k]) - float(ego.heading[k]) + 180.0) % 360.0 - 180.0)
+    apart = abs(angle_diff(float(them.heading[k]), float(ego.heading[k])))
     if apart <= SAME_WAY:  # ran up on it from behind, or moved across into it
-        ex, ey = centre(float(ego.x[k]), float(ego.y[k]), float(ego.heading[k]), ego.body)
-        ox, oy = centre(float(them.x[k]), float(them.y[k]), float(them.heading[k]), them.body)
+        ex, ey = Box.of(ego.body, float(ego.x[k]), float(ego.y[k]), float(ego.heading[k])).centre
+        ox, oy = Box.of(them.body, float(them.x[k]), float(them.y[k]), float(them.heading[k])).centre
         ahead, _ = to_ego_frame(ox, oy, ex, ey, float(ego.heading[k]))
         closing = float(ego.speed[k]) - float(them.speed[k]) * np.cos(np.radians(apart))
         return "rear_end" if ahead > 0.0 and closing > 0.0 else "cut_in"

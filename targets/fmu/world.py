@@ -12,8 +12,8 @@ from pathlib import Path
 from types import TracebackType
 from typing import Any
 
-from sovarc.compiler.lower.polyline import Point
-from sovarc.compiler.plan import Body
+from sovarc.compiler.geometry.polyline import Point
+from sovarc.compiler.vehicles import Body
 from sovarc.dsl.errors import OracleError
 
 KEEP_ROUTE = 2  # moveToXY: place exactly at (x, y), off the lanes if need be

@@ -14,13 +14,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from sovarc.compiler.plan import REAR_OVERHANG, Body, Sample
+from sovarc.compiler.plan import Sample
+from sovarc.compiler.vehicles import Body, model
 
 TAU = 2.0 * math.pi
-
-# Overhangs as fractions of the length: a 4.6 m car gets a 2.67 m wheelbase, 1.01 m behind the rear axle
-# (the rear one is the plan's: a three-point turn is laid out about that axle).
-FRONT_OVERHANG = 0.2
 
 # SUMO vehicle class -> OpenSCENARIO vehicleCategory, height (m), mass (kg).
 VEHICLE_CLASSES: dict[str, tuple[str, float, float]] = {
@@ -70,8 +67,9 @@ def osc_body(body: Body) -> tuple[OscBody, str | None]:
     if body.vclass not in VEHICLE_CLASSES:
         note = f"vehicle class {body.vclass!r} has no OpenSCENARIO category; written as 'car'"
     category, height, mass = VEHICLE_CLASSES.get(body.vclass, VEHICLE_CLASSES["passenger"])
-    rear = REAR_OVERHANG * body.length
-    wheelbase = body.length * (1.0 - REAR_OVERHANG - FRONT_OVERHANG)
+    kind = model(body)  # its overhangs: a three-point turn is laid out about its rear axle
+    rear = kind.rear_overhang * body.length
+    wheelbase = body.length * (1.0 - kind.rear_overhang - kind.front_overhang)
     wheel = round(min(0.8, max(0.5, 0.14 * body.length)), 2)
     track = round(0.85 * body.width, 2)
     return OscBody(

@@ -20,19 +20,21 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from itertools import combinations
 
+from sovarc.compiler.crashes import CRASH_ANGLES
+from sovarc.compiler.crashes import VICTIM_FACES as CRASH_FACES
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.bodies import Box, overlap
 from sovarc.targets.openscenario.kinematics import (
-    Polygon,
-    angle_diff,
+    box,
     contact_point,
     faces_at,
     footprint,
     gap,
-    overlap,
     point_distance,
     pose_at,
 )
 from sovarc.targets.openscenario.readback import Entity, Pose, ScenarioFile
-from sovarc.targets.verdict import CRASH_ANGLES, Finding
+from sovarc.targets.verdict import Finding
 
 AREA_TOL = 0.1  # m beyond C_A's radius
 SCAN_STEP = 0.02  # s
@@ -40,12 +42,8 @@ BISECTIONS = 30  # of a scan step: far below a millimetre of travel
 NEAR_SLACK = 1e-3  # m: points this close to the nearest distance are part of the contact (SUMO's oracle's)
 OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap (players detect the crash)
 
-# Relative heading (degrees, 0..180) allowed per crash type, and the victim faces it names.
-VICTIM_FACES: dict[str, frozenset[str]] = {
-    "rear_end": frozenset({"rear"}),
-    "frontal": frozenset({"front"}),
-    "side": frozenset({"left", "right"}),
-}
+# The victim faces each crash type names (compiler/crashes.py), by the type's name.
+VICTIM_FACES: dict[str, frozenset[str]] = {kind.value: frozenset(faces) for kind, faces in CRASH_FACES.items()}
 
 
 @dataclass(frozen=True)
@@ -74,8 +72,8 @@ class Scene:
     def pose(self, name: str, t: float) -> Pose:
         return pose_at(self.paths[name], t)
 
-    def box(self, name: str, t: float) -> Polygon:
-        return footprint(self.scenario.entities[name], self.pose(name, t))
+    def box(self, name: str, t: float) -> Box:
+        return box(self.scenario.entities[name], self.pose(name, t))
 
     def entity(self, name: str) -> Entity:
         return self.scenario.entities[name]
@@ -101,7 +99,7 @@ def _far_from_area(scene: Scene, crash: Crash, t: float) -> list[str]:
     """Whichever of striker and victim is not in C_A at time t, with its distance."""
     far = []
     for name in (crash.striker, crash.victim):
-        distance = point_distance(crash.point, scene.box(name, t))
+        distance = point_distance(crash.point, footprint(scene.entity(name), scene.pose(name, t)))
         if distance > crash.radius + AREA_TOL:
             far.append(f"{name} is {distance:.2f} m from it")
     return far
@@ -166,7 +164,7 @@ def _onset(scene: Scene, crash: Crash, touch: float) -> float:
 
 def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, object]) -> Iterator[Finding]:
     s_pose, v_pose = scene.pose(crash.striker, touch), scene.pose(crash.victim, touch)
-    relative = abs(math.degrees(angle_diff(s_pose.h, v_pose.h)))
+    relative = abs(angle_diff(math.degrees(s_pose.h), math.degrees(v_pose.h)))
     facts["relative_heading"] = round(relative, 1)
     if crash.type not in CRASH_ANGLES:
         yield Finding("impact_angle", False, f"unknown crash type {crash.type!r}")
@@ -179,7 +177,11 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
         message = f"{relative:.0f}° between the headings at impact; a {crash.type} crash needs {lo:g}° to {hi:g}°"
         yield Finding("impact_angle", False, message, touch)
 
-    point = contact_point(scene.box(crash.striker, touch), scene.box(crash.victim, touch), NEAR_SLACK)
+    striker_box, victim_box = (
+        footprint(scene.entity(crash.striker), s_pose),
+        footprint(scene.entity(crash.victim), v_pose),
+    )
+    point = contact_point(striker_box, victim_box, NEAR_SLACK)
     # A pedestrian's faces count too (front = the way it walks), as in SUMO's oracle: a walker
     # struck from behind is a rear_end, one crossing the road is hit on a side.
     s_faces = faces_at(scene.entity(crash.striker), s_pose, point)

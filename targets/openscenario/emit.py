@@ -99,7 +99,7 @@ def emit_files(plan: Plan, out_dir: str | Path, version: str = DEFAULT_VERSION, 
     options = Options(d.version, choose_ego(plan, ego))
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    xodr = write_road_network(plan.map, out)
+    xodr = write_road_network(plan.network, out)
     data, notes = build_document(plan, xodr.name, options, d)
     xosc = out / SCENARIO_FILE
     write_atomic(xosc, data)

@@ -1,10 +1,18 @@
-"""Plane geometry for the oracle: poses over time, body footprints, gaps, contact faces."""
+"""Plane geometry for the oracle: poses over time, body footprints, gaps, contact faces.
+
+Poses are OpenSCENARIO's (heading h in radians, counter-clockwise from +x). Bodies are the
+geometry kernel's boxes (compiler/geometry/bodies.py), with its one touching rule, and angle
+differences its `angle_diff`: headings are converted at this boundary.
+"""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
 
+from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.bodies import Box, overlap
+from sovarc.targets.openscenario.bodies import compass_of
 from sovarc.targets.openscenario.readback import Entity, Pose
 
 Point = tuple[float, float]
@@ -12,10 +20,9 @@ Polygon = tuple[Point, ...]
 TAU = 2.0 * math.pi
 
 
-def angle_diff(a: float, b: float) -> float:
-    """b - a in radians, wrapped to (-pi, pi]."""
-    d = (b - a) % TAU
-    return d - TAU if d > math.pi else d
+def turn(a: float, b: float) -> float:
+    """The turn from heading a to heading b, radians in (-pi, pi]: the kernel's angle_diff(b, a)."""
+    return math.radians(angle_diff(math.degrees(b), math.degrees(a)))
 
 
 def pose_at(poses: Sequence[Pose], t: float) -> Pose:
@@ -33,7 +40,7 @@ def pose_at(poses: Sequence[Pose], t: float) -> Pose:
             hi = mid
     a, b = poses[lo], poses[hi]
     u = (t - a.t) / (b.t - a.t) if b.t > a.t else 0.0
-    return Pose(t, a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.h + u * angle_diff(a.h, b.h)) % TAU)
+    return Pose(t, a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), (a.h + u * turn(a.h, b.h)) % TAU)
 
 
 def driven_point(entity: Entity, pose: Pose) -> Point:
@@ -46,24 +53,17 @@ def driven_point(entity: Entity, pose: Pose) -> Point:
     return pose.x + c * ahead - s * entity.center_y, pose.y + s * ahead + c * entity.center_y
 
 
-def footprint(entity: Entity, pose: Pose) -> Polygon:
-    """The bounding box's corners on the ground, counter-clockwise."""
+def box(entity: Entity, pose: Pose) -> Box:
+    """The entity's bounding box on the ground: the kernel's box about its centre."""
     c, s = math.cos(pose.h), math.sin(pose.h)
     cx = pose.x + c * entity.center_x - s * entity.center_y
     cy = pose.y + s * entity.center_x + c * entity.center_y
-    hl, hw = entity.length / 2, entity.width / 2
-    corners = ((hl, hw), (-hl, hw), (-hl, -hw), (hl, -hw))
-    return tuple((cx + c * u - s * v, cy + s * u + c * v) for u, v in corners)
+    return Box(cx, cy, compass_of(pose.h), entity.length, entity.width, front_ref=False)
 
 
-def _axes(poly: Polygon) -> list[Point]:
-    out = []
-    for i, (x1, y1) in enumerate(poly):
-        x2, y2 = poly[(i + 1) % len(poly)]
-        ex, ey = x2 - x1, y2 - y1
-        n = math.hypot(ex, ey) or 1.0
-        out.append((-ey / n, ex / n))
-    return out
+def footprint(entity: Entity, pose: Pose) -> Polygon:
+    """The bounding box's corners on the ground, counter-clockwise (front-left first)."""
+    return tuple(box(entity, pose).corners())
 
 
 def _circle(poly: Polygon) -> tuple[float, float, float]:
@@ -75,18 +75,6 @@ def _circle_gap(a: Polygon, b: Polygon) -> float:
     """A lower bound of the distance between two polygons, from their enclosing circles."""
     (ax, ay, ar), (bx, by, br) = _circle(a), _circle(b)
     return math.hypot(ax - bx, ay - by) - ar - br
-
-
-def overlap(a: Polygon, b: Polygon) -> bool:
-    """Whether two convex polygons share interior points (separating-axis test)."""
-    if _circle_gap(a, b) > 0:
-        return False
-    for ax, ay in _axes(a) + _axes(b):
-        pa = [x * ax + y * ay for x, y in a]
-        pb = [x * ax + y * ay for x, y in b]
-        if max(pa) <= min(pb) or max(pb) <= min(pa):
-            return False
-    return True
 
 
 def _point_segment(p: Point, a: Point, b: Point) -> tuple[float, Point]:
@@ -101,10 +89,11 @@ def _edges(poly: Polygon) -> list[tuple[Point, Point]]:
     return [(poly[i], poly[(i + 1) % len(poly)]) for i in range(len(poly))]
 
 
-def gap(a: Polygon, b: Polygon) -> float:
-    """The distance between two convex polygons (0 when they overlap or touch); beyond 1 m, a lower bound."""
-    if overlap(a, b):
+def gap(box_a: Box, box_b: Box) -> float:
+    """The distance between two boxes (0 when they overlap or touch); beyond 1 m, a lower bound."""
+    if overlap(box_a, box_b):
         return 0.0
+    a, b = tuple(box_a.corners()), tuple(box_b.corners())
     bound = _circle_gap(a, b)
     if bound > 1.0:  # far apart: the exact distance does not matter, only that it is large
         return bound

@@ -1,8 +1,9 @@
 """Write a plan as a self-contained SUMO scenario folder that plain `sumo -c` replays.
 
     out_dir/
-      <map>.net.xml      the road network (an OpenDRIVE map is converted by netconvert); a big
-                         map is cropped to the roads around the trajectories (crop.py)
+      <map>.net.xml      the road network the plan was planned on (for an OpenDRIVE map, the
+                         conversion its plan carries); a big map is cropped to the roads around
+                         the trajectories (crop.py)
       scenario.add.xml   a vType per participant, of its real size; each vehicle's route;
                          a POI on the collision area with weather, lighting and crash facts
       scenario.fcd.xml   the trajectories, one <timestep> per plan step
@@ -41,6 +42,11 @@ _NETCONVERT_HEADER = re.compile(rb"<!--\s*generated on.*?-->\s*", re.DOTALL)
 
 def emit(plan: Plan, out_dir: str | os.PathLike[str]) -> Path:
     """Write the scenario folder for `plan` into `out_dir` (created if needed); returns the .sumocfg."""
+    return emit_files(plan, out_dir)[0]
+
+
+def emit_files(plan: Plan, out_dir: str | os.PathLike[str]) -> tuple[Path, ...]:
+    """Write the scenario folder; returns the files written, the .sumocfg first."""
     _check_sampling(plan)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -54,7 +60,7 @@ def emit(plan: Plan, out_dir: str | os.PathLike[str]) -> Path:
     }
     for name, text in files.items():
         (out / name).write_text(text, encoding="utf-8", newline="\n")
-    return out / documents.CONFIG
+    return (out / documents.CONFIG, out / documents.ADDITIONAL, out / documents.FCD, net_file)
 
 
 def _check_sampling(plan: Plan) -> None:
@@ -72,26 +78,28 @@ def _check_sampling(plan: Plan) -> None:
 
 
 def copy_network(plan: Plan, out: Path) -> Path:
-    """The plan's map as a SUMO network in `out`; the map must be the one the plan was made on."""
+    """The plan's SUMO network in `out`, named after its map; the map must be the one the plan was made on."""
     source = Path(plan.map)
     if not source.is_file():
         raise InputError(Diagnostic("map file not found", Span.whole_file(plan.map)))
-    data = source.read_bytes()
-    if hashlib.sha256(data).hexdigest() != plan.map_sha256:
+    if hashlib.sha256(source.read_bytes()).hexdigest() != plan.map_sha256:
         message = "map file changed since the plan was made (its sha256 differs); plan again on this map"
         raise InputError(Diagnostic(message, Span.whole_file(plan.map)))
     name = source.name
     if name.lower().endswith(".net.xml"):
         target = out / name
     elif name.lower().endswith(".xodr"):
-        from sovarc.compiler.maps.netconvert import convert_opendrive
-
         target = out / (name[: -len(".xodr")] + ".net.xml")
-        convert_opendrive(source, target)
-        # netconvert's header names the date and the temp paths: drop it for byte-stable output
-        data = _NETCONVERT_HEADER.sub(b"", target.read_bytes(), count=1)
     else:
         raise InputError(Diagnostic("the SUMO target needs a .net.xml or .xodr map", Span.whole_file(plan.map)))
+    network = Path(plan.network.sumo)
+    if not network.is_file():
+        message = f"the SUMO network the plan was made on is gone ({network}); plan again on this map"
+        raise InputError(Diagnostic(message, Span.whole_file(plan.map)))
+    data = network.read_bytes()
+    if network != source:
+        # a conversion: netconvert's header names the date and its paths; dropped for byte-stable output
+        data = _NETCONVERT_HEADER.sub(b"", data, count=1)
     if needs_crop(data):
         box = Box.around([(s.x, s.y) for t in plan.trajectories for s in t.samples])
         data = crop(data, box, frozenset(e for t in plan.trajectories for e in t.edges))

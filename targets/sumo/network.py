@@ -16,6 +16,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from xml.etree import ElementTree
 
+from sovarc.compiler.geometry.angles import angle_diff, compass
+
 Point = tuple[float, float]
 CELL = 10.0  # m, side of a spatial index cell
 HEADING_MATCH = 60.0  # degrees: a lane runs "the same way" as a participant within this
@@ -100,7 +102,7 @@ class Network:
                 best = (distance, s + u, math.copysign(distance, side) if distance else 0.0, ux, uy)
             s += seg
         distance, pos, offset, ux, uy = best
-        heading = math.degrees(math.atan2(ux, uy)) % 360.0
+        heading = compass(ux, uy)
         return Spot(lane, min(pos, lane.length), offset, heading), distance
 
     def locate(self, x: float, y: float, heading: float, prefer: frozenset[str], pedestrian: bool = False) -> Spot:
@@ -119,7 +121,7 @@ class Network:
                     continue
                 spot, distance = self.spot(lane, x, y)
                 inside = distance <= lane.width / 2.0 + 1e-6
-                along = abs(_angle_diff(spot.heading, heading)) <= HEADING_MATCH
+                along = abs(angle_diff(spot.heading, heading)) <= HEADING_MATCH
                 key = (0 if inside else 1, 0 if lane.id in prefer else 1, 0 if along else 1, distance, lane.id)
                 ranked.append((key, spot))
             if ranked and (radius > 0.0 or min(ranked)[0][0] == 0):
@@ -148,11 +150,6 @@ class Network:
 
 def _cell(v: float) -> int:
     return math.floor(v / CELL)
-
-
-def _angle_diff(a: float, b: float) -> float:
-    d = (a - b) % 360.0
-    return d - 360.0 if d > 180.0 else d
 
 
 def _shape(text: str) -> tuple[Point, ...]:

@@ -9,7 +9,7 @@ Checks, in order:
 - `impact_angle`: at the first touch, the faces and the angle between headings match the
   crash type: rear_end = striker front into victim rear, headings within 45 degrees;
   frontal = front into front, headings at least 100 degrees apart (approaching each other;
-  see `verdict.CRASH_ANGLES`); side = striker front into a side of the victim.
+  see `compiler/crashes.CRASH_ANGLES`); side = striker front into a side of the victim.
 - `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
   its actions do not allow. Junction interiors have no painted lines and are not checked;
   sidewalks are always allowed to pedestrians, and to a car driving into or off the road by a
@@ -29,13 +29,13 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from sovarc.compiler.crashes import LINE_TOLERANCE, face_words, first_overlap, fits, needs, touch
+from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
-from sovarc.targets.sumo.bodies import Body, Contact, closest_points
-from sovarc.targets.sumo.impact import body_at, face_words, first_overlap, fits, needs, touch
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
-from sovarc.targets.verdict import LINE_TOLERANCE, Finding, Verdict
+from sovarc.targets.verdict import Finding, Verdict
 
 TARGET = "sumo"
 TRACK_TOLERANCE = 0.10  # m between a replayed position and its sample
@@ -88,11 +88,11 @@ def _t(value: float) -> float:
     return round(value, 3)
 
 
-def body_of(t: Trajectory, pose: Pose) -> Body:
-    return body_at(t, pose.x, pose.y, pose.angle)
+def body_of(t: Trajectory, pose: Pose) -> Box:
+    return Box.of(t.body, pose.x, pose.y, pose.angle)
 
 
-def _bodies(plan: Plan, trace: Trace, participant: str) -> list[Body | None]:
+def _bodies(plan: Plan, trace: Trace, participant: str) -> list[Box | None]:
     t = plan.trajectory(participant)
     return [None if pose is None else body_of(t, pose) for pose in trace.poses[participant]]
 

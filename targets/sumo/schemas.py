@@ -9,12 +9,9 @@ from __future__ import annotations
 import functools
 import os
 from pathlib import Path
-from typing import TYPE_CHECKING
 
+from lxml import etree
 from sovarc.dsl.errors import OracleError
-
-if TYPE_CHECKING:
-    from lxml import etree
 
 # document root -> its schema file
 SCHEMAS = {
@@ -32,7 +29,7 @@ def xsd_folder() -> Path:
     if home := os.environ.get("SUMO_HOME"):
         candidates.append(Path(home))
     try:
-        import sumo
+        import sumo  # the eclipse-sumo wheel, asked only where SUMO_HOME does not say
 
         candidates.append(Path(sumo.SUMO_HOME))
     except ImportError:
@@ -45,15 +42,11 @@ def xsd_folder() -> Path:
 
 @functools.cache
 def _schema(name: str) -> etree.XMLSchema:
-    from lxml import etree
-
     return etree.XMLSchema(etree.parse(str(xsd_folder() / name)))
 
 
 def validate(path: Path) -> list[str]:
     """Schema errors of one SUMO file (empty when valid), each as 'file:line: message'."""
-    from lxml import etree
-
     try:
         document = etree.parse(str(path))
     except etree.XMLSyntaxError as exc:

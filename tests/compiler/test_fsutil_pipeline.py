@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.pipeline import PIPELINE, PipelineError, entry_stage, run_pipeline
+from sovarc.compiler.pipeline import PIPELINE, PipelineError, SiteJob, Sites, entry_stage, run_pipeline
 from sovarc.dsl import Scenario, VerifyError
 from sovarc.dsl.span import Source
 
@@ -40,15 +40,21 @@ def test_write_atomic_leaves_nothing_behind_on_failure(tmp_path: Path, monkeypat
 
 
 def test_stages_are_an_ordered_tuple_with_typed_ends() -> None:
-    assert [s.name for s in PIPELINE] == ["read", "verify"]
+    assert [s.name for s in PIPELINE] == ["read", "verify", "assume", "sites", "stage", "emit", "check"]
+    assert [s.name for s in PIPELINE if s.per_site] == ["stage", "emit", "check"]
     for before, after in itertools.pairwise(PIPELINE):
-        assert before.produces is after.consumes
+        if after.per_site and not before.per_site:  # the site-filling wrapper: one SiteJob per candidate site
+            assert (before.produces, after.consumes) == (Sites, SiteJob)
+        else:
+            assert before.produces is after.consumes
 
 
 def test_run_pipeline_reports_each_stage() -> None:
     seen: list[str] = []
     source = Source(str(LEFT_TURN), LEFT_TURN.read_text())
-    result, log = run_pipeline(source, start="read", after_stage=lambda stage, value: seen.append(stage.name))
+    result, log = run_pipeline(
+        source, start="read", stop="verify", after_stage=lambda stage, value: seen.append(stage.name)
+    )
     assert isinstance(result, Scenario) and seen == ["read", "verify"]
     assert set(log.outputs) == {"read", "verify"} and log.warnings == []
 
@@ -58,7 +64,7 @@ def test_stop_after_and_verification() -> None:
     parsed, _ = run_pipeline(source, start="read", stop="read")
     assert parsed.participants[0].lane == 7
     with pytest.raises(VerifyError, match="V1 starts in lane 7"):
-        run_pipeline(source, start="read")
+        run_pipeline(source, start="read", stop="verify")
 
 
 def test_bad_stage_names_and_inputs() -> None:

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from sovarc.compiler.frontend import check_llm, default_llm, model_extra_installed
 
-from tests.compiler.test_cli import sovarc
+from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import EXAMPLES
 
 REPORT = EXAMPLES / "reports" / "double_yellow_pass_frontal.txt"

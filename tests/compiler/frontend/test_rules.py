@@ -19,8 +19,8 @@ from sovarc.compiler.frontend.text import normalize_names, sentences, up_to_firs
 from sovarc.dsl import UNKNOWN, parse, to_text, verify
 from sovarc.dsl.span import Source
 
-from tests.compiler.test_cli import sovarc
-from tests.conftest import EXAMPLES, SHARED
+from tests.compiler.cli.test_cli import sovarc
+from tests.conftest import EXAMPLES, SHARED, requires_shared
 
 REPORTS = sorted((EXAMPLES / "reports").glob("*.txt"))
 
@@ -127,6 +127,7 @@ def test_main_job_reads_a_report(tmp_path: Path) -> None:
     assert result.returncode == 0 and "frontend rules" in result.stdout
 
 
+@requires_shared
 def test_eval_extraction_on_the_shared_reports() -> None:
     data = SHARED / "data" / "nmvccs"
     where = ("--reports", str(data / "reports"), "--truth", str(data / "truth"), "--llm", "none")

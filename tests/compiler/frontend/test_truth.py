@@ -10,8 +10,8 @@ from sovarc.compiler.frontend.truth import import_truth, import_truth_file
 from sovarc.dsl import ParseError, parse, to_text, verify
 from sovarc.dsl.ir import Speed, SpeedUnit
 
-from tests.compiler.test_cli import sovarc
-from tests.conftest import SHARED
+from tests.compiler.cli.test_cli import sovarc
+from tests.conftest import SHARED, requires_shared
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth"
 
@@ -76,6 +76,7 @@ def test_bad_records_are_errors() -> None:
         import_truth({**RECORD, "weather": ["hail"]}, "x", "bad.json")
 
 
+@requires_shared
 def test_every_shared_record_imports_and_verifies() -> None:
     files = sorted(TRUTH.glob("*/*.json"))
     assert len(files) == 90
@@ -88,6 +89,7 @@ def test_every_shared_record_imports_and_verifies() -> None:
         assert scenario.provenance is not None and len(scenario.provenance.sha256) == 64
 
 
+@requires_shared
 def test_import_truth_command(tmp_path: Path) -> None:
     result = sovarc("import-truth", str(TRUTH / "t"), "-o", str(tmp_path / "out"))
     assert result.returncode == 0, result.stderr

@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, contacts, describe
-from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.route import Route
-from sovarc.compiler.plan import CAR
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.ir import CrashType, Participant, Role
 
 

@@ -12,6 +12,7 @@ from sovarc.dsl import parse
 from sovarc.dsl.errors import InputError, LoweringError, Severity, UnsatError
 
 from tests.compiler.lower.staging import town
+from tests.conftest import SHARED, requires_shared
 
 
 def _vehicle(pid: str, heading: str, lane: int, actions: str = "follow_lane") -> str:
@@ -117,6 +118,7 @@ def test_a_missing_map_file_is_an_input_error(tmp_path: Path) -> None:
         load_map(tmp_path / "nowhere.net.xml")
 
 
+@requires_shared
 @pytest.mark.slow  # loads the DRT city network (about 2 s)
 def test_a_lane_shift_on_a_short_city_arm_is_a_lowering_error_not_a_crash() -> None:
     """Ground truth t/19 on SUMO's DRT city, junction 1677246221: the arm before the junction is shorter
@@ -127,8 +129,6 @@ def test_a_lane_shift_on_a_short_city_arm_is_a_lowering_error_not_a_crash() -> N
     from sovarc.compiler.lower import lower_on
     from sovarc.compiler.lower.assume import assume
     from sovarc.dsl.errors import SovarcError
-
-    from tests.conftest import SHARED
 
     city = load_map(Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml")
     staged, notes = assume(import_truth_file(SHARED / "data" / "nmvccs" / "truth" / "t" / "19.json").scenario)

@@ -6,14 +6,16 @@ import math
 
 import numpy as np
 import pytest
+from sovarc.compiler.crashes import LINE_TOLERANCE
+from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.lower.corridor import Drive
-from sovarc.compiler.lower.kturn import AXLE_RADIUS, KERB_OVERHANG, STEP, corners_d, layout
-from sovarc.compiler.lower.uturn import Band, corner_span
-from sovarc.compiler.plan import CAR, REAR_OVERHANG
-from sovarc.targets.verdict import LINE_TOLERANCE
+from sovarc.compiler.lower.kturn import KERB_OVERHANG, STEP, corners_d, layout
+from sovarc.compiler.lower.uturn import corner_span
+from sovarc.compiler.vehicles import CAR, CAR_MODEL, REAR_OVERHANG
 
 from tests.compiler.lower.test_uturn import _road
 
+AXLE_RADIUS = CAR_MODEL.axle_radius
 EAST, WEST = 90.0, 270.0
 
 

@@ -10,7 +10,7 @@ from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.lower.solve import NICE_T_MAX
 from sovarc.compiler.maps import load_map
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth"
 CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
@@ -19,6 +19,7 @@ CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
 CLUSTER = "junction:cluster_1560223404_2335739502_3273797701"
 
 
+@requires_shared
 def test_a_hard_nonlinear_problem_is_solved_in_the_natural_pass_not_given_up_on_a_clock() -> None:
     scenario = import_truth_file(TRUTH / "crossing" / "14.json").scenario
     road_map = load_map(CITY)

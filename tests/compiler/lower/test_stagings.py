@@ -3,9 +3,9 @@ what a report leaves open, or holds least firmly, and says so in a note."""
 
 from __future__ import annotations
 
+from sovarc.compiler.crashes import CRASH_ANGLES
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.dsl import parse
-from sovarc.targets.verdict import CRASH_ANGLES
 
 from tests.compiler.lower.staging import town
 

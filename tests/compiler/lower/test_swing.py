@@ -14,18 +14,19 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sumo
+from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.frontend.truth import import_truth_file
+from sovarc.compiler.geometry.bodies import Box
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower import lower_on, sites_for
-from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.swing import MARGIN, Approach, keep_in_lane
 from sovarc.compiler.maps import RoadMap, load_map
-from sovarc.compiler.plan import CAR, Plan
+from sovarc.compiler.plan import Plan
 from sovarc.compiler.synth import synthesize
-from sovarc.targets.sumo.bodies import Body
-from sovarc.targets.verdict import LINE_TOLERANCE
+from sovarc.compiler.vehicles import CAR
 
 from tests.compiler.lower.staging import town
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth" / "t"
 CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
@@ -51,18 +52,20 @@ def _worst_reach(plan: Plan, participant: str, road_map: RoadMap, lane_id: str) 
             continue  # past the stop line
         if centre.project((s.x, s.y))[0] < trajectory.body.length:
             continue  # the rear is still on the lane before this one
-        body = Body(s.x, s.y, s.heading, trajectory.body.length, trajectory.body.width, True)
+        body = Box.of(trajectory.body, s.x, s.y, s.heading)
         corners = np.asarray(body.corners(shrink=LINE_TOLERANCE))
         worst = max(worst, float(centre.distances(corners).max()) - lane.getWidth() / 2.0)
     return worst
 
 
+@requires_shared
 def test_a_right_turn_from_the_stop_line_keeps_the_rear_in_its_lane() -> None:
     """t/18 on t_north: V1 waits at the stop line, then turns right onto an exit lane 3.45 m away."""
     plan = _plan(18, town(), "junction:t_north")
     assert _worst_reach(plan, "V1", town(), "main2_1") < 0.0
 
 
+@requires_shared
 @pytest.mark.slow  # loads the DRT city network (about 2 s)
 def test_a_left_turn_and_a_bent_approach_keep_the_rear_in_the_lane_on_the_city() -> None:
     """t/19 on the city's junction 1560223462: V1's left turn starts 19 degrees off its lane, and
@@ -73,6 +76,7 @@ def test_a_left_turn_and_a_bent_approach_keep_the_rear_in_the_lane_on_the_city()
     assert _worst_reach(plan, "V2", city, "172013798#3_1") < 0.0
 
 
+@requires_shared
 @pytest.mark.slow  # replays in SUMO
 def test_the_sumo_oracle_sees_no_line_crossing_on_t_north() -> None:
     from sovarc.targets.sumo import check

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from sovarc.compiler.geometry.frame import Band
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower.corridor import Corridor, Drive
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.lower.uturn import MIN_RADIUS, Band, choose, footprint, layout, u_turn_line
+from sovarc.compiler.lower.uturn import choose, footprint, layout, u_turn_line
 from sovarc.compiler.maps import LaneInfo
-from sovarc.compiler.plan import CAR
+from sovarc.compiler.vehicles import CAR, CAR_MODEL
 from sovarc.dsl.errors import UnsatError
 
 LENGTH = 200.0
@@ -48,7 +49,7 @@ def test_a_u_turn_on_a_two_lane_road_keeps_the_body_on_it(width: float, to: int)
 def test_a_tight_u_turn_is_a_round_curve_not_a_kink(width: float) -> None:
     _, turn = _turn(_road(2, width), 2)
     radii = turn.curvature_radius(window=2.0)
-    assert radii.min() >= 0.95 * MIN_RADIUS
+    assert radii.min() >= 0.95 * CAR_MODEL.front_radius
     turns = np.abs((np.diff(turn.headings(turn.s[:-1] + 1e-6)) + 180.0) % 360.0 - 180.0)
     assert turns.max() < 10.0  # degrees between neighbouring segments
 

@@ -8,7 +8,7 @@ import pytest
 from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.dsl import Scenario, parse
 
-from tests.conftest import EXAMPLES, SHARED
+from tests.conftest import EXAMPLES, SHARED, requires_shared
 
 TOWN = EXAMPLES / "maps" / "town.net.xml"
 OPENDRIVE = SHARED / "data" / "opendrive"
@@ -37,4 +37,6 @@ def osm() -> RoadMap:
 
 @pytest.fixture(scope="session")
 def opendrive() -> dict[str, RoadMap]:
+    if not OPENDRIVE.is_dir():
+        pytest.skip(requires_shared.kwargs["reason"])
     return {path.stem: load_map(path) for path in sorted(OPENDRIVE.glob("*.xodr"))}

@@ -11,6 +11,7 @@ from sovarc.compiler.maps import RoadMap, load_map
 from sovarc.dsl.errors import InputError
 
 from tests.compiler.maps.conftest import OPENDRIVE, TOWN
+from tests.conftest import requires_shared
 
 pytestmark = pytest.mark.slow  # needs SUMO
 
@@ -85,6 +86,7 @@ def test_a_directory_and_a_truncated_network_are_input_errors(tmp_path: Path) ->
         load_map(cut)
 
 
+@requires_shared
 def test_an_opendrive_file_converts_from_any_folder(tmp_path: Path) -> None:
     copy = tmp_path / "with space" / "straight.xodr"
     copy.parent.mkdir()

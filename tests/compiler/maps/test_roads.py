@@ -17,7 +17,7 @@ from sovarc.compiler.maps.netconvert import netconvert_path
 from sovarc.compiler.maps.survey import describe, draw, missing, survey
 from sovarc.dsl.ir import RoadKind
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 pytestmark = pytest.mark.slow  # needs SUMO
 
@@ -140,7 +140,7 @@ def test_the_survey_lists_draws_and_says_what_is_missing(tmp_path: Path) -> None
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.mark.skipif(not CARLA.is_dir(), reason="needs the shared CARLA towns")
+@requires_shared
 @pytest.mark.parametrize("town", ["Town01", "Town02"])
 def test_carla_town_site_lists(town: str, golden: object) -> None:
     road_map = load_map(CARLA / f"{town}.xodr")

@@ -5,8 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.maps import RoadMap, SiteMatch, find_sites, match_sites, scenario_needs
-from sovarc.compiler.maps.geometry import angle_diff
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.compiler.maps.sites import CROSS_TOLERANCE
 from sovarc.dsl import parse

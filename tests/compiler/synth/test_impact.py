@@ -13,16 +13,15 @@ from pathlib import Path
 
 import pytest
 import sumo
-from sovarc.compiler import synth
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Trajectory
+from sovarc.compiler.crashes import CRASH_ANGLES, planned_touch
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Trajectory
 from sovarc.compiler.synth.impact import check_impact
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
-from sovarc.dsl.errors import Diagnostic, SynthesisError
+from sovarc.dsl.errors import SynthesisError
 from sovarc.dsl.ir import CrashType, RoadKind, Role
-from sovarc.targets.sumo.impact import planned_touch
-from sovarc.targets.verdict import CRASH_ANGLES
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 
 FRONTAL = CRASH_ANGLES["frontal"][0]
 MEET_T = 3.0  # s: the bumper centres meet at the origin
@@ -67,8 +66,7 @@ def _plan(victim: tuple[Sample, ...]) -> Plan:
 
     return Plan(
         scenario=SCENARIO,
-        map="none",
-        map_sha256="0",
+        network=Network("none", "0", "none"),
         site="junction:j",
         kind=RoadKind.T_JUNCTION,
         rotation=0,
@@ -95,32 +93,20 @@ def test_a_crossing_of_straight_paths_at_100_degrees_is_frontal() -> None:
     check_impact(_plan(_straight(79.5, 4.0)))
 
 
-def test_a_refused_staging_gives_way_to_the_next(monkeypatch: pytest.MonkeyPatch) -> None:
-    def refuse_first(lowered: str, **_: object) -> str:
-        if lowered == "first":
-            raise SynthesisError(Diagnostic("first refused"))
-        return f"plan of {lowered}"
-
-    monkeypatch.setattr(synth, "synthesize", refuse_first)
-    assert synth.synthesize_first(["first", "second"]) == "plan of second"  # type: ignore[list-item]
-    with pytest.raises(SynthesisError, match="first refused"):
-        synth.synthesize_first(["first"])  # type: ignore[list-item]
-
-
+@requires_shared
 @pytest.mark.slow  # loads SUMO's Braunschweig network and replays in SUMO
 def test_t2_on_braunschweig_is_planned_as_its_replay_then_measures_it() -> None:
-    from sovarc.compiler.backend import plan_site
     from sovarc.compiler.frontend.truth import import_truth_file
     from sovarc.compiler.lower import sites_for
     from sovarc.compiler.maps import load_map
+    from sovarc.compiler.staging import stage_on_site
     from sovarc.targets.sumo import check
 
     city = load_map(Path(sumo.SUMO_HOME) / "tools" / "game" / "bs3d" / "bs.net.xml")
     scenario = import_truth_file(SHARED / "data" / "nmvccs" / "truth" / "t" / "2.json").scenario
     staged, notes, matches = sites_for(scenario, city, roads=12)
     match = next(m for m in matches if m.site.id == "junction:cluster_26153648_34043448")
-    plan = plan_site(staged, notes, city, match).plan
-    assert plan is not None
+    plan = stage_on_site(staged, notes, city, match)
     planned = planned_touch(plan)
     assert planned is not None and planned.angle >= FRONTAL
     verdict = check(plan)

@@ -8,12 +8,13 @@ import math
 
 import numpy as np
 import pytest
+from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.lower.kturn import KERB_OVERHANG
-from sovarc.compiler.lower.polyline import Polyline
 from sovarc.compiler.lower.route import MANOEUVRE_SPEED
 from sovarc.compiler.maps import load_map
-from sovarc.compiler.plan import Sample, heading_vector
+from sovarc.compiler.plan import Sample
 from sovarc.dsl.errors import UnsatError
 
 from tests.compiler.synth.street import STRUCK_TURNING, k_turn_plan, scenario, street

@@ -13,10 +13,11 @@ from collections.abc import Iterable
 
 import numpy as np
 import pytest
+from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.lower import DEFAULT_LIMIT_KMH, lower
 from sovarc.compiler.lower.route import MANOEUVRE_SPEED
 from sovarc.compiler.lower.solve import V_PED_MAX
-from sovarc.compiler.plan import Plan, Sample, Trajectory, dump_plan, heading_vector
+from sovarc.compiler.plan import Plan, Sample, Trajectory, dump_plan
 from sovarc.compiler.synth import synthesize
 from sovarc.compiler.synth.timing import knots, sample
 from sovarc.dsl.errors import SovarcError

@@ -8,8 +8,9 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.plan import CAR, Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 
@@ -59,8 +60,7 @@ def plan_of(*trajectories: Trajectory, striker: str = "V1", victim: str = "V2", 
     scenario = parse((EXAMPLES / "scenarios" / "straight_rear_end_stopped_traffic.sov").read_text(encoding="utf-8"))
     return Plan(
         scenario=scenario,
-        map=str(TOWN),
-        map_sha256="0" * 64,
+        network=Network(str(TOWN), "0" * 64, str(TOWN)),
         site=SITE,
         kind=RoadKind.STRAIGHT,
         rotation=0,

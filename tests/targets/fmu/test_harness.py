@@ -53,15 +53,6 @@ def test_runs_are_deterministic(reference: EgoFmu) -> None:
         assert np.array_equal(a.run.commands, b.run.commands)
 
 
-def test_the_random_baseline_runs_the_same_ego_tasks(reference: EgoFmu) -> None:
-    report = run_test_results(crossing(), reference, seed=1)
-    random = run_test_results(crossing(), reference, seed=1, method="random")
-    assert [r.run.ego for r in random] == [r.run.ego for r in report]
-    for a, b in zip(report, random, strict=True):
-        assert a.plan.trajectory(a.run.ego) == b.plan.trajectory(b.run.ego)  # the ego's task is unchanged
-        assert b.verdict.facts["method"] == "random"
-
-
 def test_run_target_writes_a_verdict_and_a_picture_per_test(tmp_path: Path, reference: EgoFmu) -> None:
     verdicts = run_target(cut_in(), tmp_path, reference)
     written = sorted(p.name for p in tmp_path.iterdir())

@@ -8,10 +8,11 @@ from dataclasses import replace
 import numpy as np
 import pytest
 import sumolib
-from sovarc.compiler.lower.polyline import Polyline
-from sovarc.compiler.plan import CAR, PEDESTRIAN
+from sovarc.compiler.geometry.bodies import Box, overlap
+from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN
 from sovarc.targets.fmu.bicycle import MAX_BRAKE, Geometry, State, advance
-from sovarc.targets.fmu.geometry import TICK, corners, overlap, straight_on, time_to_collision
+from sovarc.targets.fmu.geometry import TICK, straight_on, time_to_collision
 from sovarc.targets.fmu.task import GOAL_MARGIN, MIN_CRUISE, extended, make_task, to_ego_frame
 
 from tests.targets.fmu.plans import TOWN, car_following, eastbound
@@ -35,12 +36,13 @@ def test_bicycle_goes_straight_turns_left_and_never_reverses() -> None:
 
 
 def test_boxes_overlap_and_the_front_bumper_is_the_reference_point() -> None:
-    ego = corners(10.0, 0.0, 90.0, CAR)  # front bumper at x = 10, body back to x = 5.4
-    assert min(x for x, _ in ego) == pytest.approx(5.4) and max(x for x, _ in ego) == pytest.approx(10.0)
-    assert overlap(ego, corners(14.0, 0.0, 90.0, CAR))  # its back at 9.4
-    assert not overlap(ego, corners(14.7, 0.0, 90.0, CAR))
-    assert not overlap(ego, corners(10.0, 2.0, 90.0, CAR))  # side by side, 0.2 m apart
-    assert overlap(corners(0.0, 0.0, 0.0, PEDESTRIAN), corners(0.2, 0.2, 45.0, PEDESTRIAN))
+    ego = Box.of(CAR, 10.0, 0.0, 90.0)  # front bumper at x = 10, body back to x = 5.4
+    xs = [x for x, _ in ego.corners()]
+    assert min(xs) == pytest.approx(5.4) and max(xs) == pytest.approx(10.0)
+    assert overlap(ego, Box.of(CAR, 14.0, 0.0, 90.0))  # its back at 9.4
+    assert not overlap(ego, Box.of(CAR, 14.7, 0.0, 90.0))
+    assert not overlap(ego, Box.of(CAR, 10.0, 2.0, 90.0))  # side by side, 0.2 m apart
+    assert overlap(Box.of(PEDESTRIAN, 0.0, 0.0, 0.0), Box.of(PEDESTRIAN, 0.2, 0.2, 45.0))
 
 
 def test_time_to_collision_head_on_and_apart() -> None:

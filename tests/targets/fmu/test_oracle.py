@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sovarc.compiler.plan import CAR
+from sovarc.compiler.geometry.bodies import Box, overlap
+from sovarc.compiler.vehicles import CAR
 from sovarc.targets.fmu.harness import Contact, Run, Track
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS, judge
 from sovarc.targets.fmu.task import make_task
@@ -110,8 +111,6 @@ def test_harsh_braking_begun_at_the_start_answers_the_state_the_test_began_in() 
 def _side_run(ego_speed: float, other_start: tuple[float, float], other_heading: float, other_speed: float) -> Run:
     """V1 (the ego) drives east from x = 50 at ego_speed for 2 s; V2 drives straight from other_start;
     the run ends at their first contact."""
-    from sovarc.targets.fmu.geometry import corners, overlap
-
     times = np.arange(STEPS) * 0.05
     ego_x = 50.0 + ego_speed * times
     rad = np.radians(other_heading)
@@ -120,7 +119,7 @@ def _side_run(ego_speed: float, other_start: tuple[float, float], other_heading:
         (
             k
             for k in range(STEPS)
-            if overlap(corners(ego_x[k], -8.25, 90.0, CAR), corners(ox[k], oy[k], other_heading, CAR))
+            if overlap(Box.of(CAR, ego_x[k], -8.25, 90.0), Box.of(CAR, ox[k], oy[k], other_heading))
         ),
         None,
     )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sovarc.compiler.plan import CAR, PEDESTRIAN, Body
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN, Body
 from sovarc.targets.fmu.harness import Run, Track
 from sovarc.targets.fmu.task import make_task
 from sovarc.targets.fmu.violations import violation

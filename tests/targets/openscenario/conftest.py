@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 from sovarc.compiler.plan import Plan
-from sovarc.targets.openscenario import Emitted, emit_files
+from sovarc.targets.openscenario import Emitted
 
-from tests.targets.openscenario.plans import CASES
+from tests.targets.openscenario.plans import CASES, emit_files
 
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
 

@@ -11,16 +11,32 @@ import hashlib
 import math
 from collections.abc import Callable
 from dataclasses import replace
+from pathlib import Path
 
-from sovarc.compiler.plan import CAR, PEDESTRIAN, Body, Impact, Plan, Sample, Trajectory, heading_vector
+from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.maps import with_opendrive
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Trajectory
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN, Body
 from sovarc.dsl import parse
 from sovarc.dsl.ir import Role
+from sovarc.targets import openscenario
 
 from tests.conftest import EXAMPLES
 
 TOWN = EXAMPLES / "maps" / "town.net.xml"
 STEP = 0.1
 AFTER = 1.0  # s the trajectories go on past the impact
+
+
+def on_opendrive(plan: Plan) -> Plan:
+    """The plan with its network's OpenDRIVE file, as the compiler provides it before this target runs."""
+    return replace(plan, network=with_opendrive(plan.network))
+
+
+def emit_files(plan: Plan, out_dir: str | Path, version: str = openscenario.DEFAULT_VERSION) -> openscenario.Emitted:
+    """The target's emit_files, on the plan with its OpenDRIVE file (netconvert's, cached, for the town)."""
+    return openscenario.emit_files(on_opendrive(plan), out_dir, version)
+
 
 Pose = tuple[float, float, float, float]  # x, y, compass heading, speed
 Motion = Callable[[float], Pose]
@@ -72,8 +88,7 @@ def make_plan(
         trajectories.append(Trajectory(p.id, p.role, body, samples, (), (), (), None))
     return Plan(
         scenario=scenario,
-        map=str(TOWN),
-        map_sha256=hashlib.sha256(TOWN.read_bytes()).hexdigest(),
+        network=Network(str(TOWN), hashlib.sha256(TOWN.read_bytes()).hexdigest(), str(TOWN)),
         site=site,
         kind=scenario.road.kind,  # type: ignore[arg-type]
         rotation=0,

@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 from sovarc.compiler.plan import Plan, Sample
 from sovarc.targets import sumo
-from sovarc.targets.openscenario import check, emit_files
+from sovarc.targets.openscenario import check
 
-from tests.targets.openscenario.plans import CASES, clipped_rear_corner, straight, with_samples
+from tests.targets.openscenario.plans import CASES, clipped_rear_corner, emit_files, straight, with_samples
 
 pytestmark = pytest.mark.slow  # SUMO replays the plan; netconvert writes the .xodr
 

@@ -9,7 +9,8 @@ from dataclasses import replace
 
 import pytest
 from lxml import etree
-from sovarc.compiler.plan import CAR, Plan
+from sovarc.compiler.plan import Plan
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.errors import Severity
 from sovarc.dsl.ir import Environment, Lighting, Weather
 from sovarc.targets.openscenario import VERSIONS, choose_ego

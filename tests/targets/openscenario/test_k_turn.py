@@ -6,9 +6,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from sovarc.targets.openscenario import check, emit_files
+from sovarc.targets.openscenario import check
 
 from tests.compiler.synth.street import k_turn_plan
+from tests.targets.openscenario.plans import emit_files
 
 pytestmark = pytest.mark.slow
 

@@ -12,11 +12,11 @@ from pathlib import Path
 import pytest
 from lxml import etree
 from sovarc.compiler.plan import Sample
-from sovarc.targets.openscenario import VERSIONS, asam_qc, check, emit_files
+from sovarc.targets.openscenario import VERSIONS, asam_qc, check
 from sovarc.targets.verdict import Verdict
 
 from tests.targets.openscenario.conftest import Emitter
-from tests.targets.openscenario.plans import CASES, clipped_rear_corner, straight, with_samples
+from tests.targets.openscenario.plans import CASES, clipped_rear_corner, emit_files, straight, with_samples
 
 pytestmark = pytest.mark.slow  # needs SUMO (netconvert writes the .xodr)
 

@@ -1,12 +1,16 @@
-"""The esmini harness. esmini itself cannot be installed here (not on PyPI or in Debian), so
-`play` runs against a stand-in script that speaks esmini's command line and log format."""
+"""The esmini harness. esmini is not on PyPI or in Debian: most tests run `play` against a stand-in
+script that speaks esmini's command line and log format; the target's check runs the real player
+when one is found ($ESMINI, PATH, or the shared tools' headless build)."""
 
 from __future__ import annotations
 
+import os
+import shutil
 import stat
 from pathlib import Path
 
 import pytest
+from sovarc.targets import registry
 from sovarc.targets.openscenario.player import (
     Collision,
     PlayerError,
@@ -17,7 +21,19 @@ from sovarc.targets.openscenario.player import (
     play,
 )
 
+from tests.conftest import SHARED
 from tests.targets.openscenario.conftest import Emitter
+from tests.targets.openscenario.plans import CASES, on_opendrive
+
+SHARED_ESMINI = SHARED / "tools" / "esmini" / "bin" / "esmini"
+
+
+def real_esmini() -> str | None:
+    for candidate in (os.environ.get("ESMINI"), shutil.which("esmini"), str(SHARED_ESMINI)):
+        if candidate and Path(candidate).is_file() and os.access(candidate, os.X_OK):
+            return candidate
+    return None
+
 
 LOG = """\
 0.000: Init V1 TeleportAction initState -> startTransition -> runningState
@@ -84,3 +100,29 @@ def test_play_runs_the_player_and_judges_its_log(emitted: Emitter, tmp_path: Pat
     assert verdict.facts == {"collisions": [[4.02, "V1", "V2"]]}
     missed = play(files.xosc, plan, esmini=_stand_in(tmp_path, "0.000: nothing happened\n"))
     assert [f.check for f in missed.failures] == ["player_collision"]
+
+
+def _target_check(case: str, tmp_path: Path) -> list[str]:
+    target = registry.get("openscenario")
+    plan = on_opendrive(CASES[case]())
+    artifacts = target.emit(plan, tmp_path, target.Options())
+    (verdict,) = target.check(plan, artifacts, target.Options())
+    assert verdict.passed, verdict.failures
+    return [f.check for f in verdict.findings]
+
+
+def test_without_esmini_the_targets_check_is_the_oracles(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.delenv("ESMINI", raising=False)
+    monkeypatch.setenv("PATH", str(tmp_path / "bin"))
+    checks = _target_check("rear_end", tmp_path)
+    assert "xsd" in checks and not any(c.startswith("player") for c in checks)
+
+
+@pytest.mark.slow  # runs the real player
+@pytest.mark.skipif(real_esmini() is None, reason="no esmini: set $ESMINI or put it on PATH")
+def test_the_targets_check_plays_the_scenario_in_esmini_when_found(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setenv("ESMINI", str(real_esmini()))
+    checks = _target_check("left_turn", tmp_path)
+    assert {"xsd", "player_run", "player_collision", "player_other_collisions"} <= set(checks)

@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from lxml import etree
-from sovarc.dsl.errors import InputError
+from sovarc.compiler.maps import network_of, with_opendrive
+from sovarc.compiler.maps.networks import as_opendrive_14
+from sovarc.compiler.plan import Network
+from sovarc.dsl.errors import InputError, UnsupportedError
 from sovarc.targets.openscenario import emit_files
 from sovarc.targets.openscenario.readback import read_scenario
-from sovarc.targets.openscenario.roadnet import as_opendrive_14, write_road_network
+from sovarc.targets.openscenario.roadnet import write_road_network
 from sovarc.targets.openscenario.schema import (
     OPENDRIVE_SCHEMAS,
     SCHEMAS,
@@ -21,7 +25,7 @@ from sovarc.targets.openscenario.schema import (
 from sovarc.targets.openscenario.validation import xodr_finding
 from sovarc.targets.openscenario.versions import VERSIONS, dialect
 
-from tests.conftest import SHARED
+from tests.conftest import SHARED, requires_shared
 from tests.targets.openscenario.conftest import Emitter
 from tests.targets.openscenario.plans import CASES, TOWN
 
@@ -51,6 +55,12 @@ NETCONVERT_15_MARKUP = """<?xml version="1.0" encoding="UTF-8"?>
 """
 
 
+def opendrive_map(xodr: Path) -> Network:
+    """An OpenDRIVE map's network as its plans carry it (this target reads only the .xodr)."""
+    sha256 = hashlib.sha256(xodr.read_bytes()).hexdigest()
+    return Network(str(xodr), sha256, sumo="(the SUMO conversion, not read here)", opendrive=str(xodr))
+
+
 def test_every_bundled_schema_loads_and_has_its_notice() -> None:
     for version in VERSIONS:
         assert openscenario_schema(dialect(version)) is not None
@@ -65,11 +75,20 @@ def test_a_file_that_is_not_a_map_is_an_input_error(tmp_path: Path) -> None:
     bogus = tmp_path / "roads.txt"
     bogus.write_text("no roads here", encoding="utf-8")
     with pytest.raises(InputError, match=r"expected a \.net\.xml or \.xodr file"):
-        write_road_network(bogus, tmp_path / "out")
+        network_of(bogus)
+    with pytest.raises(InputError, match=r"expected a \.net\.xml or \.xodr file"):
+        write_road_network(Network(str(bogus), "0" * 64, str(bogus), str(bogus)), tmp_path / "out")
 
 
+def test_a_sumo_map_without_its_opendrive_file_is_not_converted_here(tmp_path: Path) -> None:
+    with pytest.raises(UnsupportedError, match=r"carries no OpenDRIVE file: the compiler provides it"):
+        write_road_network(Network(str(TOWN), "0" * 64, str(TOWN)), tmp_path)
+    assert not list(tmp_path.iterdir())
+
+
+@requires_shared
 def test_an_opendrive_map_is_copied_byte_for_byte(tmp_path: Path) -> None:
-    written = write_road_network(ESMINI_MAP, tmp_path)
+    written = write_road_network(opendrive_map(ESMINI_MAP), tmp_path)
     assert written.name == "straight_500m.xodr"
     assert written.read_bytes() == ESMINI_MAP.read_bytes()
 
@@ -105,7 +124,8 @@ class TestSumoNetworkConverted:
 
     def test_the_same_network_gives_the_same_bytes(self, emitted: Emitter, tmp_path: Path) -> None:
         _, files = emitted("t_bone")
-        assert write_road_network(TOWN, tmp_path).read_bytes() == files.xodr.read_bytes()
+        again = write_road_network(with_opendrive(network_of(TOWN)), tmp_path)
+        assert again.read_bytes() == files.xodr.read_bytes()
 
     def test_coordinates_are_the_networks_own(self, emitted: Emitter) -> None:
         """netconvert keeps the SUMO coordinates (no offset), so plan points are OpenDRIVE points."""
@@ -127,9 +147,10 @@ class TestSumoNetworkConverted:
         assert "lenght" in finding.message
 
 
+@requires_shared
 @pytest.mark.parametrize("xodr", sorted(p.name for p in (SHARED / "data" / "opendrive").glob("*.xodr")))
 def test_an_opendrive_map_travels_with_the_scenario_and_validates(xodr: str, tmp_path: Path) -> None:
-    plan = replace(CASES["rear_end"](), map=str(SHARED / "data" / "opendrive" / xodr))
+    plan = replace(CASES["rear_end"](), network=opendrive_map(SHARED / "data" / "opendrive" / xodr))
     files = emit_files(plan, tmp_path)
     assert files.xodr.name == xodr
     finding, _ = xodr_finding(read_scenario(files.xosc))
@@ -141,7 +162,7 @@ def test_a_city_with_a_geographic_offset_and_crosswalks_converts_to_valid_opendr
     import sumo
 
     city = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
-    doc = etree.parse(str(write_road_network(city, tmp_path)))
+    doc = etree.parse(str(write_road_network(with_opendrive(network_of(city)), tmp_path)))
     assert schema_errors(opendrive_schema(4), doc) == []
     header = doc.getroot().find("header")
     assert header.find("userData[@code='offset']/offset").get("x") == "398790.46"  # the net's -netOffset

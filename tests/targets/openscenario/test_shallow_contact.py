@@ -7,15 +7,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from sovarc.compiler.backend import folder_name
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.maps import load_map
+from sovarc.compiler.slots import folder_name
 from sovarc.compiler.synth import synthesize
 from sovarc.dsl import parse
-from sovarc.targets.openscenario import check, emit_files
+from sovarc.targets.openscenario import check
 from sovarc.targets.verdict import Verdict
 
-from tests.targets.openscenario.plans import TOWN
+from tests.targets.openscenario.plans import TOWN, emit_files
 
 pytestmark = pytest.mark.slow  # netconvert writes the .xodr
 

@@ -15,8 +15,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 import sumolib
-from sovarc.compiler.maps.geometry import compass, point_at, shape_length
-from sovarc.compiler.plan import CAR, PEDESTRIAN, Body, Impact, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.geometry.angles import compass
+from sovarc.compiler.geometry.polyline import point_at, shape_length
+from sovarc.compiler.plan import Impact, Network, Plan, Sample, Segment, Trajectory
+from sovarc.compiler.vehicles import CAR, PEDESTRIAN, Body
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 
@@ -148,8 +150,7 @@ def make_plan(example: str, site: str, kind: RoadKind, *trajectories: Trajectory
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     return Plan(
         scenario=scenario,
-        map=str(TOWN),
-        map_sha256=hashlib.sha256(TOWN.read_bytes()).hexdigest(),
+        network=Network(str(TOWN), hashlib.sha256(TOWN.read_bytes()).hexdigest(), str(TOWN)),
         site=site,
         kind=kind,
         rotation=0,

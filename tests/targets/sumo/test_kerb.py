@@ -6,7 +6,8 @@ import math
 from pathlib import Path
 
 import sumo
-from sovarc.compiler.plan import CAR, Trajectory
+from sovarc.compiler.plan import Trajectory
+from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.ir import Role
 from sovarc.targets.sumo.network import read_network
 from sovarc.targets.sumo.oracle import lane_violation

@@ -1,0 +1,101 @@
+"""THE crash definitions, for lowering, synthesis and every oracle: the angle between the headings
+each crash type allows, the faces it names, the lane-line tolerance, and the first touch of a
+plan's striker and victim read from its samples.
+
+One measurement for all its users: the SUMO oracle applies `touch` to the poses SUMO had the
+bodies in at each step of the replay, and synthesis (compiler/synth/impact.py) `planned_touch`
+to the plan's own samples, which the replay puts SUMO's bodies on. So a plan synthesis accepts is
+one the oracle sees the same way, not one whose lane lines met at the right angle while its
+bodies touch at another.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from sovarc.compiler.geometry.bodies import Box, Contact, first_touch, overlap
+from sovarc.compiler.plan import Plan
+from sovarc.dsl.ir import CrashType
+
+# Degrees between the headings at first touch that each crash type allows, for every oracle.
+# Frontal is front into front with the two approaching each other: head-on, or a car turning
+# across an oncoming one (crash databases, and the ground truth, code that front-to-front). A
+# front corner touching a crossing car at right angles is not frontal: that is a side crash.
+CRASH_ANGLES: dict[str, tuple[float, float]] = {
+    "rear_end": (0.0, 45.0),
+    "frontal": (100.0, 180.0),
+    "side": (0.0, 180.0),
+}
+REAR_END_MAX_ANGLE = CRASH_ANGLES["rear_end"][1]
+FRONTAL_MIN_ANGLE = CRASH_ANGLES["frontal"][0]
+# The victim's faces the striker's front must meet, per crash type.
+VICTIM_FACES: dict[CrashType, tuple[str, ...]] = {
+    CrashType.REAR_END: ("rear",),
+    CrashType.FRONTAL: ("front",),
+    CrashType.SIDE: ("left", "right"),
+}
+# m a body may reach over a lane line before it counts as crossing it: the SUMO oracle's bound,
+# which lowering (compiler/lower/swing.py, kturn.py) plans inside.
+LINE_TOLERANCE = 0.25
+
+
+def first_overlap(a: Sequence[Box | None], b: Sequence[Box | None]) -> int | None:
+    """The first step at which both bodies are present and overlap."""
+    for k, (p, q) in enumerate(zip(a, b, strict=True)):
+        if p is not None and q is not None and overlap(p, q):
+            return k
+    return None
+
+
+def touch(times: Sequence[float], a: Sequence[Box | None], b: Sequence[Box | None]) -> Contact | None:
+    """Where bodies a and b, sampled at `times`, first touch: between the step before they first
+    overlap and that step, each body moving straight between its two poses (None: they never do)."""
+    k = first_overlap(a, b)
+    if k is None:
+        return None
+    j = max(k - 1, 0)
+    if any(p is None for p in (a[j], b[j])):
+        j = k
+    a0, a1, b0, b1 = a[j], a[k], b[j], b[k]
+    assert a0 is not None and a1 is not None and b0 is not None and b1 is not None
+    return first_touch(times[j], times[k], (a0, a1), (b0, b1))
+
+
+def planned_touch(plan: Plan) -> Contact | None:
+    """The first touch of the plan's striker and victim, read from its samples as the oracle reads
+    SUMO's poses: the replay moves each body onto its sample at every step of the plan's own length."""
+    striker, victim = plan.trajectory(plan.impact.striker), plan.trajectory(plan.impact.victim)
+    times = [s.t for s in striker.samples]
+    a = [Box.of(striker.body, s.x, s.y, s.heading) for s in striker.samples]
+    b = [Box.of(victim.body, s.x, s.y, s.heading) for s in victim.samples]
+    return touch(times, a, b)
+
+
+def fits(kind: CrashType, contact: Contact) -> bool:
+    """Whether the striker's front meets the face of the victim the crash type names, at an angle
+    between the headings the type allows (a side crash: any angle)."""
+    s_zone, v_zone = contact.zones
+    ok = "front" in s_zone and any(face in v_zone for face in VICTIM_FACES[kind])
+    if kind is CrashType.REAR_END:
+        return ok and contact.angle <= REAR_END_MAX_ANGLE
+    if kind is CrashType.FRONTAL:
+        return ok and contact.angle >= FRONTAL_MIN_ANGLE
+    return ok
+
+
+def face_words(zone: tuple[str, ...]) -> str:
+    """('front',) -> 'front'; ('left',) -> 'left side'; ('front', 'left') -> 'front-left corner'."""
+    if len(zone) == 2:
+        return f"{zone[0]}-{zone[1]} corner"
+    return f"{zone[0]} side" if zone[0] in {"left", "right"} else zone[0]
+
+
+def needs(kind: CrashType, striker: str, victim: str) -> str:
+    """What the crash type needs at the first touch, in words."""
+    wanted = " or ".join(face_words((face,)) for face in VICTIM_FACES[kind])
+    text = f"{kind.value} needs {striker}'s front into {victim}'s {wanted}"
+    if kind is CrashType.REAR_END:
+        return text + f", headings within {REAR_END_MAX_ANGLE:.0f} degrees"
+    if kind is CrashType.FRONTAL:
+        return text + f", headings at least {FRONTAL_MIN_ANGLE:.0f} degrees apart"
+    return text

@@ -1,0 +1,109 @@
+"""The scenario reconstruction rate (SRR) in SUMO, per road kind: the paper's Tables 4 and 5.
+
+Each scenario is staged on --roads sites of a map (the pipeline's assume, sites and stage), and each
+plan replayed by the SUMO target's oracle; a scenario-site counts as reconstructed when the oracle
+passes it. A failure is sorted into the paper's classes: planning failed, crash type mismatch, line
+crossing (and replay error, when SUMO refused the scenario).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import sovarc.targets.registry as registry
+from sovarc.compiler.maps import RoadMap
+from sovarc.compiler.pipeline import Options, stage_sites
+from sovarc.compiler.plan import Plan
+from sovarc.compiler.slots import first_message
+from sovarc.dsl.errors import SovarcError
+from sovarc.dsl.ir import Scenario
+from sovarc.targets.verdict import Verdict
+
+FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
+
+Row = dict[str, Any]
+
+
+def classify(verdict: Any) -> str | None:
+    """The paper's Table 5 classes for a SUMO verdict; None when it passed."""
+    failed = {f.check for f in verdict.failures}
+    if not failed:
+        return None
+    if failed & {"collision", "pair", "impact_angle"}:
+        return "crash type mismatch"
+    if "lane_lines" in failed:
+        return "line crossing"
+    return "replay error"
+
+
+def reconstruct(
+    scenario: Scenario, path: Path, road_map: RoadMap, *, roads: int, seed: int = 0, spare: int | None = None
+) -> list[Row]:
+    """One row per scenario-site asked for: staged on the map and replayed in SUMO, or why not."""
+    kind = scenario.road.kind.value if hasattr(scenario.road.kind, "value") else "unknown"
+    rows: list[Row] = []
+    try:
+        results = stage_sites(scenario, Options(map=road_map, roads=roads, seed=seed, spare=spare))
+    except Exception as exc:  # no fitting site: every requested site failed to plan
+        reason = getattr(exc, "diagnostics", None)
+        rows += [_row(path, kind, "-", "planning failed", str(reason[0].message if reason else exc))]
+        rows += [_row(path, kind, "-", "planning failed", "no site")] * (roads - 1)
+        return rows
+    for r in results:
+        if r.plan is None:
+            rows.append(_row(path, kind, r.site, "planning failed", first_message(r.error)))
+        else:
+            try:
+                verdict = replay(r.plan)
+                failure = classify(verdict)
+                rows.append(_row(path, kind, r.site, failure, "; ".join(f.message for f in verdict.failures)))
+            except SovarcError as error:  # SUMO refused the scenario: counted, and the batch goes on
+                rows.append(_row(path, kind, r.site, "replay error", str(error)))
+        rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
+    missing = roads - len(results)
+    rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
+    return rows
+
+
+def replay(plan: Plan) -> Verdict:
+    """The SUMO target's verdict on the plan, its files emitted to a folder of their own and thrown away."""
+    sumo = registry.get("sumo")
+    options = sumo.Options()
+    with tempfile.TemporaryDirectory(prefix="sovarc-srr-") as tmp:
+        [verdict] = sumo.check(plan, sumo.emit(plan, Path(tmp), options), options)
+    return verdict
+
+
+def map_key(map_path: str, maps: list[str]) -> str:
+    """A map's file name, or the path as given when another map has the same name (two cities'
+    osm.net.xml), so that no map's rows overwrite another's in the JSON."""
+    name = Path(map_path).name
+    return name if [Path(m).name for m in maps].count(name) == 1 else map_path
+
+
+def _row(path: Path, kind: str, site: str, failure: str | None, reason: str) -> Row:
+    return {"scenario": path.stem, "kind": kind, "site": site, "passed": failure is None, "failure": failure,
+            "reason": reason}  # fmt: skip
+
+
+def srr_table(name: str, rows: list[Row]) -> str:
+    kinds = sorted({str(r["kind"]) for r in rows})
+    lines = [f"SRR on {name} (scenario-sites reconstructed / attempted)", f"  {'road kind':<14}{'SRR':>8}  n"]
+    for kind in [*kinds, "all"]:
+        chosen = [r for r in rows if kind in ("all", r["kind"])]
+        ok = sum(1 for r in chosen if r["passed"])
+        lines.append(f"  {kind:<14}{100.0 * ok / max(1, len(chosen)):7.1f}%  {ok}/{len(chosen)}")
+    counts = Counter(str(r["failure"]) for r in rows if not r["passed"])
+    lines.append("  failures: " + ", ".join(f"{c} {counts[c]}" for c in FAILURE_CLASSES))
+    replaced = sum(1 for r in rows if r.get("skipped") and r["failure"] != "planning failed")
+    given_up = sum(len(r.get("skipped", ())) for r in rows)
+    if given_up:
+        lines.append(f"  sites that could not host their crash: {given_up}; slots filled by another site: {replaced}")
+    return "\n".join(lines) + "\n"
+
+
+def sov_files(path: Path) -> list[Path]:
+    return sorted(path.glob("*.sov")) if path.is_dir() else [path]
