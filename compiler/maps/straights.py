@@ -18,6 +18,7 @@ import numpy as np
 from sovarc.compiler.geometry.polyline import Point, heading_between, point_at, shape_length
 from sovarc.compiler.maps.geometry import fit_frame
 from sovarc.compiler.maps.roads import LaneInfo, RoadNet, cumulative, cut, is_road, project, project_many
+from sovarc.compiler.maps.site import Arm, Site
 from sovarc.dsl.ir import RoadKind
 
 STEP = 2.0  # m between samples along a road
@@ -33,9 +34,7 @@ SNAP = STEP + 0.5  # m: a stretch this close to its edges' ends runs to them
 MEDIAN_MAX = 1.0  # m
 
 
-def straight_sites(roads: RoadNet, min_length: float) -> list[Any]:
-    from sovarc.compiler.maps.sites import Arm, Site  # sites.py imports this module
-
+def straight_sites(roads: RoadNet, min_length: float) -> list[Site]:
     sites = []
     done: set[str] = set()
     for edge in sorted((e for e in roads.net.getEdges() if is_road(e)), key=lambda e: e.getID()):
@@ -55,21 +54,21 @@ def straight_sites(roads: RoadNet, min_length: float) -> list[Any]:
                     continue
                 if not two_way and len(directions[0][1]) < 2:
                     continue  # a one-way single lane is not a road to stage a crash on
-                sites.append(_site(directions, Arm, Site))
+                sites.append(_site(directions))
     return sites
 
 
-def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]], arm_type: Any, site_type: Any) -> Any:
+def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]]) -> Site:
     axes = [lanes[len(lanes) // 2].shape for _, lanes in directions]
     headings = [heading_between(a[0], a[-1]) for a in axes]
     frame = fit_frame(headings)
     arms = []
     for k, (_name, own) in enumerate(directions):
         other = directions[1 - k][1] if len(directions) == 2 else ()
-        arms.append(arm_type(own[0].edge, round(headings[k], 6), frame.slots[k], own, other, own[0].length))
+        arms.append(Arm(own[0].edge, round(headings[k], 6), frame.slots[k], own, other, own[0].length))
     middles = [point_at(a, shape_length(a) / 2.0) for a in axes]
     centre = (sum(p[0] for p in middles) / len(middles), sum(p[1] for p in middles) / len(middles))
-    return site_type(
+    return Site(
         id="road:" + "|".join(name for name, _ in directions),
         kind=RoadKind.STRAIGHT,
         centre=(round(centre[0], 3), round(centre[1], 3)),
