@@ -24,6 +24,7 @@ from sovarc.compiler.cli.files import (
 )
 from sovarc.compiler.cli.parser import COMMANDS, build_parser
 from sovarc.compiler.cli.run import cmd_lower, cmd_run
+from sovarc.compiler.cli.sites import cmd_sites
 from sovarc.dsl import SovarcError
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK, EXIT_USAGE
 
@@ -40,6 +41,7 @@ HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
     "diff": cmd_diff,
     "convert": cmd_convert,
     "schema": cmd_schema,
+    "sites": cmd_sites,
 }
 
 

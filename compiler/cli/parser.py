@@ -8,6 +8,7 @@ from typing import Any
 
 import sovarc.targets.registry as registry
 from sovarc.compiler.cli.common import add_llm_options
+from sovarc.compiler.cli.sites import add_sites_parser
 from sovarc.compiler.pipeline import STAGE_NAMES
 
 try:
@@ -56,6 +57,7 @@ COMMANDS: dict[str, str] = {
     "extract": "read crash reports into .sov scenarios (the front end alone)",
     "eval": "measure the compiler against ground truth (extraction, srr, tests)",
     "lower": "stage a scenario on a map's sites and write the timed plan",
+    "sites": "list (and draw) the sites a map offers, per road kind",
 }
 
 
@@ -123,6 +125,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_llm_options(run)
 
     _add_lower_parser(sub, COMMANDS["lower"], _formatter)
+    add_sites_parser(sub, COMMANDS["sites"], _formatter)
 
     check = sub.add_parser(
         "check",

@@ -78,16 +78,17 @@ def _random_trajectory(plan: Plan, template: Trajectory, site: Site, net: Net, r
         limit = net.getLane(link.from_lane).getSpeed()
         speed = rng.uniform(*SPEED_RANGE) * limit
         start = max(arrive_at - speed * rng.uniform(1.0, max(plan.duration, 1.5)), 0.0)
+        edges = tuple(dict.fromkeys(net.getLane(lane).getEdge().getID() for lane in parts))
     else:
         arm = rng.choice([a for a in site.arms if a.incoming])
         lane = rng.choice(arm.incoming)
-        parts, shapes = [lane.id], [lane.shape]
+        # a straight site's lane may run on several SUMO lanes (a road split at lane sections)
+        parts, shapes, edges = list(lane.lanes), [lane.shape], lane.edges
         speed = rng.uniform(*SPEED_RANGE) * lane.speed
         start = rng.uniform(0.0, 0.6 * lane.length)
     points = [p for shape in shapes for p in shape]
     path = Polyline(points, min_gap=PATH_GAP)
     samples = _drive(path, start, speed, plan)
-    edges = tuple(dict.fromkeys(net.getLane(lane).getEdge().getID() for lane in parts))
     end = speed * plan.duration
     segment = Segment("random", start, start + end, 0.0, plan.duration, speed)
     return Trajectory(

@@ -86,9 +86,9 @@ class Drive:
         self._use(self.corridor.own[self.lane - 1])
 
     def _use(self, lane: LaneInfo) -> None:
-        self.lanes.add(lane.id)
-        if lane.edge not in self.edges:
-            self.edges.append(lane.edge)
+        # a lane chained through pass-through nodes runs on several SUMO lanes and edges, in order
+        self.lanes.update(lane.lanes)
+        self.edges.extend(edge for edge in lane.edges if edge not in self.edges)
 
     def _target(self, number: int, against: bool) -> Polyline:
         lanes = self.corridor.other if against else self.corridor.own

@@ -346,5 +346,5 @@ def lanes_touched(line: Polyline, match: SiteMatch, margin: float = 0.3) -> set[
             if (shape.max(axis=0) < low - reach).any() or (shape.min(axis=0) > high + reach).any():
                 continue  # the lane's box misses the line's
             if (Polyline(lane.shape).distances(points) <= reach).any():
-                found.add(lane.id)
+                found.update(lane.lanes)  # every SUMO lane of a chained lane
     return found

@@ -231,7 +231,15 @@ def _no_fit(
     counts = Counter(s.kind for s in sites)
     have = ", ".join(f"{counts[k]} {KIND_NAMES[k][1]}" + _most_lanes(sites, k) for k in RoadKind)
     message = f"no site of {road_map.name} fits scenario '{scenario.name}': it needs {kind} with {asked}"
+    if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
+        message = f"{road_map.name} has no {kind.split(' ', 1)[1]} for scenario '{scenario.name}' ({asked})"
     message += f"; the map has {have}"
+    of_kind = [site for site in sites if site.kind is scenario.road.kind]
+    if of_kind and len(needs) > 1:
+        # which participant the map's sites of this kind fail, each need on its own (any rotation)
+        alone = [sum(match_site(site, (need,), clamp=True) is not None for site in of_kind) for need in needs]
+        fits = ", ".join(f"{need.participant} {count}" for need, count in zip(needs, alone, strict=True))
+        message += f"; of its {len(of_kind)} {KIND_NAMES[scenario.road.kind][1]}, each participant alone fits: {fits}"
     hint = "some sites fit with fewer lanes; match with clamp=True to use them" if could_clamp else None
     return Diagnostic(message, scenario.road.meta.where("kind") or scenario.meta.span, hint=hint)
 
