@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end, source_of
+from sovarc.compiler.frontend import scenario_name
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.progress import progress
@@ -114,6 +115,7 @@ def cmd_import_truth(args: argparse.Namespace) -> int:
             files.append(path)
     if not files:
         raise UsageError("no ground-truth .json files found in " + ", ".join(args.inputs))
+    _refuse_shared_outputs({str(path): f"{path.parent.name}_{path.stem}" for path in files}, args.output)
     reporter = Reporter()
     written = 0
     for path in progress(files, len(files), "import-truth"):
@@ -135,6 +137,8 @@ def cmd_import_truth(args: argparse.Namespace) -> int:
 def cmd_extract(args: argparse.Namespace) -> int:
     if len(args.reports) > 1 and not args.output:
         raise UsageError("give -o DIR to extract more than one report")
+    if args.output:
+        _refuse_shared_outputs({name: scenario_name(name) for name in args.reports}, args.output)
     reporter = Reporter()
     written = 0
     front_end = make_front_end(args)
@@ -160,3 +164,17 @@ def cmd_extract(args: argparse.Namespace) -> int:
     if args.output:
         print(f"{written} of {len(args.reports)} scenario(s) written to {args.output}", file=sys.stderr)
     return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
+def _refuse_shared_outputs(names: dict[str, str], folder: str) -> None:
+    """Before anything is written: two inputs whose scenarios would get one name (a/30.txt and b/30.txt)
+    would overwrite each other's file in `folder`. Named inputs, not a silent loss."""
+    first: dict[str, str] = {}
+    for given, name in names.items():
+        if name in first and first[name] != given:
+            target = Path(folder) / f"{name}.sov"
+            raise UsageError(
+                f"{first[name]} and {given} would both be written to {target} (scenario '{name}'); "
+                "give the inputs distinct file names, or run them into separate folders"
+            )
+        first.setdefault(name, given)

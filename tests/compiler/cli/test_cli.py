@@ -208,3 +208,31 @@ def test_module_entry_point_matches_script() -> None:
         [sys.executable, "-m", "sovarc.compiler.cli", "--version"], capture_output=True, text=True, timeout=60
     )
     assert result.stdout.strip() == "sovarc 0.1.0"
+
+
+def test_two_reports_of_one_file_name_are_refused_before_anything_is_written(tmp_path: Path) -> None:
+    """a/30.txt and b/30.txt would both become out/report_30.sov: the second would overwrite the first."""
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        shutil.copy(EXAMPLES / "reports" / "left_turn_oncoming_pickup.txt", tmp_path / folder / "30.txt")
+    out = tmp_path / "out"
+    done = sovarc("extract", str(tmp_path / "a" / "30.txt"), str(tmp_path / "b" / "30.txt"), "-o", str(out),
+                  "--llm", "none")  # fmt: skip
+    assert done.returncode == 2
+    assert f"{tmp_path / 'a' / '30.txt'} and {tmp_path / 'b' / '30.txt'} would both be written to " in done.stderr
+    assert f"{out / 'report_30.sov'}" in done.stderr
+    assert not out.exists()
+
+
+def test_two_truth_records_of_one_name_are_refused_before_anything_is_written(tmp_path: Path) -> None:
+    record = {"weather": ["clear"], "lighting": ["bright"], "speedlimit": 0, "intersection": "no", "T": "no",
+              "carCount": 2, "laneCount": 2, "striker": "V1", "impactPart": 3,
+              "carInformation": {"V1": {"behaviors": [["follow lane"]], "direction": 1, "laneNumber": 1},
+                                 "V2": {"behaviors": [["stop"]], "direction": 1, "laneNumber": 1}}}  # fmt: skip
+    for root in ("one", "two"):
+        (tmp_path / root / "t").mkdir(parents=True)
+        (tmp_path / root / "t" / "3.json").write_text(json.dumps(record))
+    out = tmp_path / "out"
+    done = sovarc("import-truth", str(tmp_path / "one"), str(tmp_path / "two"), "-o", str(out))
+    assert done.returncode == 2 and "would both be written to" in done.stderr and "t_3.sov" in done.stderr
+    assert not out.exists()
