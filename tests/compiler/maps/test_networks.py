@@ -12,6 +12,7 @@ from sovarc.compiler.maps import network_of, networks, with_opendrive
 from sovarc.compiler.plan import Network, dump_plan, plan_from_json
 
 from tests.compiler.maps.conftest import OPENDRIVE, TOWN
+from tests.conftest import requires_shared
 from tests.targets.fmu.plans import car_following
 
 
@@ -44,6 +45,7 @@ def test_the_plan_json_carries_the_network_and_reads_back() -> None:
         plan_from_json(data)
 
 
+@requires_shared
 @pytest.mark.slow  # netconvert
 def test_an_opendrive_map_is_converted_once_into_the_cache(cache: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     xodr = OPENDRIVE / "straight_500m.xodr"
