@@ -40,7 +40,9 @@ _AV = re.compile(
 )
 # "A Zoox vehicle in autonomous mode", "an Aurora truck ... in autonomy": a brand's vehicle, when the report
 # says its vehicle drove itself.
-_BRAND = re.compile(r"\b(?i:an?|the) ([A-Z][\w.]+) (vehicle|truck|shuttle|car|bus)\b")
+_BRAND = re.compile(
+    r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
+)
 _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b", re.I)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
@@ -85,7 +87,7 @@ def _labels(text: str) -> tuple[str, str] | None:
     for phrase in sorted(heads, key=len, reverse=True):
         if len(heads[phrase]) == 1 and not re.fullmatch(r"vehicle|car", phrase):
             text = _replace_phrase(text, phrase, next(iter(heads[phrase])))
-    named = ", ".join(f"{pid} '{p}'" for p, pid in sorted(words.items(), key=lambda kv: kv[1]) if " " in p or True)
+    named = ", ".join(f"{pid} '{p}'" for p, pid in sorted(words.items(), key=lambda kv: kv[1]))
     return text, f"participants named by the report's own labels ({named})"
 
 
@@ -101,7 +103,9 @@ def _automated(text: str) -> tuple[str, str] | None:
         text = re.sub(r"\b(?:an?|the) [A-Z][\w.]* (?:vehicle|car|truck|shuttle)\b(?=\s*\(\"?V1\"?\))", "V1", text)
     if brand is not None and (first is None or brand.start() < first.start() or brand.group(1) in said):
         said = brand.group() if first is None else said
-        text = _replace_phrase(text, f"{brand.group(1)} {brand.group(2)}", "V1")
+        text = re.sub(
+            r"\b(?i:an?|the)(?: subject| test)? " + re.escape(f"{brand.group(1)} {brand.group(2)}") + r"\b", "V1", text
+        )
     text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
     return text, said
 

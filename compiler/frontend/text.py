@@ -33,15 +33,20 @@ _NO_IMPACT = re.compile(
 def normalize_names(text: str) -> str:
     """Rewrite every way of naming a vehicle as V1, V2, ... and pedestrians as P1, P2, ..."""
 
+    def pedestrian(m: re.Match[str]) -> str:
+        return f"P{m.group(2) or 1}"
+
+    return _PEDESTRIAN.sub(pedestrian, number_vehicles(text))
+
+
+def number_vehicles(text: str) -> str:
+    """Rewrite every way of numbering a vehicle ("V 1", "Vehicle #1", "Unit 1") as V1, V2, ..."""
+
     def vehicle(m: re.Match[str]) -> str:
         raw = (m.group(1) or m.group(2)).lower()
         return f"V{_NUMBER_WORDS.get(raw, raw)}"
 
-    def pedestrian(m: re.Match[str]) -> str:
-        return f"P{m.group(2) or 1}"
-
-    text = _VEHICLE.sub(vehicle, text)
-    return _PEDESTRIAN.sub(pedestrian, text)
+    return _VEHICLE.sub(vehicle, text)
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words
@@ -106,12 +111,12 @@ def name_parked(text: str) -> str:
 def prepare(text: str) -> str:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
     that name none: see `names`), makes and body words, an unnumbered parked victim."""
-    return name_parked(resolve_aliases(normalize_names(label_parties(normalize_names(text))[0])))
+    return name_parked(resolve_aliases(normalize_names(label_parties(number_vehicles(text))[0])))
 
 
 def naming_note(text: str) -> str | None:
     """How the participants were numbered when the report does not number them itself."""
-    return label_parties(normalize_names(text))[1]
+    return label_parties(number_vehicles(text))[1]
 
 
 def sentences(text: str) -> list[str]:
