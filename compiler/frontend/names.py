@@ -69,7 +69,7 @@ def _replace_phrase(text: str, phrase: str, pid: str) -> str:
 
 def _labels(text: str) -> tuple[str, str] | None:
     """The report's own labels: "a Zoox vehicle (Vehicle 1)" names V1 "the Zoox vehicle" from then on."""
-    found = list(_LABELLED.finditer(text))
+    found = [m for m in _LABELLED.finditer(text) if not re.fullmatch(r"[VP]\d", m.group(1))]
     if not found:
         return None
     words: dict[str, str] = {}
@@ -136,8 +136,8 @@ def _others(text: str) -> list[tuple[str, str]]:
 def label_parties(text: str) -> tuple[str, str | None]:
     """The text with its parties numbered (see the module), and the note saying how; unchanged when the
     report numbers them itself."""
-    if re.search(r"\b[VP]\d\b", text):
-        return text, None
+    if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
+        return text, None  # numbered outside any labels: the report's own numbering
     labelled = _labels(text)
     if labelled is not None:
         return labelled
