@@ -49,9 +49,12 @@ _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\baut
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
 _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LABEL.pattern, re.I)
 _IMPACT = re.compile(
-    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|rear[- ]ended)\b",
+    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|rear[- ]end\w*|"
+    r"clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
     re.I,
 )
+# A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
+_SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
 _THING = re.compile(
     r"\b(?:an?|the) " + _MODS + r"(animal|dog|cat|deer|bird|pole|tree|bollard|curb|barrier|debris|tire shreds|"
@@ -119,9 +122,10 @@ def _others(text: str) -> list[tuple[str, str]]:
     from sovarc.compiler.frontend.text import sentences
 
     sents = sentences(text)
-    for i, sentence in enumerate(sents):
-        if not _IMPACT.search(sentence) or not re.search(r"\bV1\b|\bit\b|\bthem\b", sentence):
-            continue
+    impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
+    summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
+    for i in impacts + summaries:
+        sentence = sents[i]
         users: list[tuple[str, str]] = []
         for m in _USER.finditer(sentence):
             if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
@@ -136,8 +140,14 @@ def _others(text: str) -> list[tuple[str, str]]:
 def label_parties(text: str) -> tuple[str, str | None]:
     """The text with its parties numbered (see the module), and the note saying how; unchanged when the
     report numbers them itself."""
-    if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
+    if re.search(r"\bV1\b", _LABEL.sub(" ", text)):
         return text, None  # numbered outside any labels: the report's own numbering
+    if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
+        # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
+        automated = _automated(text) if not _LABELLED.search(text) else None
+        if automated is None:
+            return text, None
+        return automated[0], f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
     labelled = _labels(text)
     if labelled is not None:
         return labelled
