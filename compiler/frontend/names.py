@@ -19,7 +19,8 @@ _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|w
 _MODS = r"(?:" + _STOP + r"[\w.'-]+ ){0,3}?"
 # Road users by kind, longest first; the kind the IR gives each (a cyclist is read as a pedestrian, noted).
 _KINDS = (
-    r"passenger car|pickup truck|box truck|heavy truck|semi-truck|semi truck|tractor[- ]trailer|school bus|"
+    r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
+    r"tractor[- ]trailer|school bus|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
     r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist"
 )
@@ -113,8 +114,13 @@ def _automated(text: str) -> tuple[str, str] | None:
     return text, said
 
 
+# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle".
+_SAME = {"passenger vehicle": "passenger car", "pick-up truck": "pickup truck", "sport utility vehicle": "suv"}
+_SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Following)\b[^,]*, ", re.I)
+
+
 def _head(m: re.Match[str]) -> str:
-    return m.group(1).lower()
+    return _SAME.get(m.group(1).lower(), m.group(1).lower())
 
 
 def _others(text: str) -> list[tuple[str, str]]:
@@ -125,7 +131,10 @@ def _others(text: str) -> list[tuple[str, str]]:
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
     summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
     for i in impacts + summaries:
+        # "After the pedestrians had crossed, an SUV ... made contact": an opening clause sets the scene
         sentence = sents[i]
+        if (scene := _SCENE_CLAUSE.match(sentence)) and _IMPACT.search(sentence[scene.end() :]):
+            sentence = sentence[scene.end() :]
         users: list[tuple[str, str]] = []
         for m in _USER.finditer(sentence):
             if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
@@ -163,7 +172,8 @@ def label_parties(text: str) -> tuple[str, str | None]:
         counts[role] += 1
         pid = f"{role}{counts[role]}"
         named.append(f"{pid} '{words}'")
-        text = _replace_phrase(text, kind, pid)
+        for said in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
+            text = _replace_phrase(text, said, pid)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
             text = _replace_phrase(text, kind.split()[-1], pid)  # "the car" for "a passenger car"
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
