@@ -172,8 +172,8 @@ def label_parties(text: str) -> tuple[str, str | None]:
         counts[role] += 1
         pid = f"{role}{counts[role]}"
         named.append(f"{pid} '{words}'")
-        for said in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            text = _replace_phrase(text, said, pid)
+        for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
+            text = _replace_phrase(text, words_for, pid)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
             text = _replace_phrase(text, kind.split()[-1], pid)  # "the car" for "a passenger car"
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:

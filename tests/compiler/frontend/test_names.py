@@ -113,3 +113,19 @@ def test_a_partner_the_ir_cannot_hold_is_refused_clearly() -> None:
 def test_no_road_user_at_all_is_refused_with_what_was_looked_for() -> None:
     with pytest.raises(FrontEndError, match=r"names no vehicle or pedestrian .*the Waymo AV"):
         read("Something happened on the street near the market and someone called it in later that day.")
+
+
+def test_the_note_names_the_words_the_report_used_for_each_party() -> None:
+    text = (
+        'At 3:10 PM a Robo Autonomous Vehicle ("Robo AV") was in a collision involving an SUV. The Robo AV was '
+        "traveling north and slowed, yielding to a pedestrian crossing in the crosswalk. An SUV traveling north "
+        "behind the Robo AV made contact with the rear of the Robo AV. The SUV left the scene."
+    )
+    extraction = read(text)
+    assert extraction.notes[0] == (
+        "participants numbered by rule: the automated vehicle ('a Robo Autonomous Vehicle') is V1; "
+        "the other road users in the first impact are V2 'An SUV'"
+    )
+    crash = extraction.scenario.crash
+    assert (crash.striker, crash.victim) == ("V2", "V1")
+    assert [p.id for p in extraction.scenario.participants] == ["V1", "V2"]
