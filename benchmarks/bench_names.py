@@ -9,7 +9,9 @@ confidential ("Narrative - CBI?" not Y, no "[REDACTED", at least 100 characters)
 highest Report Version). The pool is split by the parity of the first byte of sha256(Report ID): even is the
 development half (rules may be tuned on it), odd is held out (never read while tuning).
 
-Per half: the share extracted (not refused, no internal error) and the share whose participant count is 2.
+Per half: the share extracted (not refused, no internal error) and the share whose participant count is 2;
+and how many refused narratives say no impact at all (GM's duplicate filings of Cruise reports are
+boilerplate whose crash description is cut off: refusing them is right).
 Then the NMVCCS figures `sovarc eval extraction --llm none` prints on the 90 labelled reports (mean, actions).
 """
 
@@ -18,6 +20,7 @@ from __future__ import annotations
 import argparse
 import csv
 import hashlib
+import re
 from pathlib import Path
 
 from sovarc.compiler.evaluation.extraction import Report
@@ -62,21 +65,25 @@ def held_out(report_id: str) -> bool:
     return hashlib.sha256(report_id.encode("utf-8")).digest()[0] % 2 == 1
 
 
-def read_half(front_end: FrontEnd, rows: list[dict[str, str]]) -> tuple[int, int, int, list[str]]:
-    extracted = two = 0
+_IMPACT = re.compile(r"\b(?:struck|strik\w+|impact\w*|contact\w*|collid\w+|hit|rear[- ]end\w*)\b", re.I)
+
+
+def read_half(front_end: FrontEnd, rows: list[dict[str, str]]) -> tuple[int, int, int, list[str], int]:
+    extracted = two = silent = 0
     errors: list[str] = []
     for row in rows:
         source = Source(f"sgo_{row['Report ID']}.txt", row["Narrative"])
         try:
             got = front_end.extract(source).scenario
         except FrontEndError:
+            silent += not _IMPACT.search(row["Narrative"])
             continue
         except Exception as e:  # an internal error is a failure to report, not to hide
             errors.append(f"{row['Report ID']}: {type(e).__name__}: {e}")
             continue
         extracted += 1
         two += len(got.participants) == 2
-    return extracted, two, len(rows), errors
+    return extracted, two, len(rows), errors, silent
 
 
 def nmvccs(front_end: FrontEnd, data: Path) -> Report:
@@ -106,6 +113,7 @@ def main() -> None:
     print(f"{'reports':24}" + "".join(f"{f[2]:>14}" for f in figures.values()))
     print(f"{'extracted %':24}" + "".join(f"{100 * f[0] / max(f[2], 1):>14.1f}" for f in figures.values()))
     print(f"{'two participants %':24}" + "".join(f"{100 * f[1] / max(f[2], 1):>14.1f}" for f in figures.values()))
+    print(f"{'refused, no impact said':24}" + "".join(f"{f[4]:>14}" for f in figures.values()))
     for name, f in figures.items():
         for error in f[3]:
             print(f"internal error ({name}): {error}")
