@@ -27,10 +27,11 @@ from sovarc.compiler.frontend.choice import (
 )
 from sovarc.compiler.frontend.defaults import apply_defaults
 from sovarc.compiler.frontend.hybrid import model_reading
+from sovarc.compiler.frontend.names import partner_refusal
 from sovarc.compiler.frontend.providers import make_provider
 from sovarc.compiler.frontend.providers.base import Provider
 from sovarc.compiler.frontend.rules import extract
-from sovarc.compiler.frontend.text import check_narrative, unrepresented
+from sovarc.compiler.frontend.text import check_narrative, naming_note, number_vehicles, unrepresented
 from sovarc.dsl import Scenario
 from sovarc.dsl.ir import Provenance, Unknown
 from sovarc.dsl.span import Source
@@ -86,12 +87,17 @@ class FrontEnd:
 
     def extract(self, source: Source) -> Extraction:
         check_narrative(source.text, source.name)
+        if refusal := partner_refusal(number_vehicles(source.text)):
+            raise FrontEndError(f"{source.name}: {refusal}; nothing to extract")
         rules = extract(source.text, scenario_name(source.name), source.name)
         notes = unrepresented(source.text)
+        if note := naming_note(source.text):
+            notes = [note, *notes]
         if not rules.participants:
             raise FrontEndError(
                 f"{source.name}: the report names no vehicle or pedestrian (looked for V1, Vehicle #1, "
-                "vehicle one, pedestrian, ...); nothing to extract"
+                "vehicle one, labels like '(Vehicle 1)', an automated vehicle such as 'the Waymo AV' with the road "
+                "user it struck, pedestrian, ...); nothing to extract"
             )
         scenario = rules
         if self.llm != "none":

@@ -16,7 +16,7 @@ from dataclasses import replace
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash
-from sovarc.compiler.frontend.text import first_impact, participants, prepare, sentences
+from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -290,6 +290,18 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     # A pedestrian first named after the first impact was met in a later one, which the IR does not hold.
     seen = " ".join(sents[: impact + 1]) if impact >= 0 else named
     ids = [pid for pid in participants(named) if pid.startswith("V") or re.search(rf"\b{pid}\b", seen)]
+    if impact >= 0:
+        # A pedestrian is a party only when an impact involves it: "yielding to a pedestrian crossing" names a
+        # bystander. (Vehicles the report numbers itself all stay: it numbers the vehicles in its crash.)
+        carry = next((p.who[0] for p in pieces(sents, ids) if p.sentence == impact and p.who), None)
+        crash = read_crash(sents, impact, carry)
+        involved = {
+            carry,
+            crash.striker,
+            crash.victim,
+            *re.findall(r"\bP\d\b", " ".join(filter(describes_impact, sents))),
+        }
+        ids = [pid for pid in ids if pid.startswith("V") or pid in involved]
     parts = pieces(sents, ids)
     mine = by_participant(parts, ids)
     lanes = extract_lanes(named)
@@ -297,6 +309,13 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     before = [s for s in sents[: impact + 1]] if impact >= 0 else sents
     carry = next((p.who[0] for p in parts if p.sentence == impact and p.who), None)
     crash = read_crash(sents, impact, carry)
+    # The crash may be read from a later sentence that restates the impact ("The front of V1 then struck a
+    # pedestrian"): whoever it names as striker or victim is a party, even if first named there.
+    roles = {r for r in (crash.striker, crash.victim) if isinstance(r, str)}
+    if not roles <= set(ids):
+        ids = [pid for pid in participants(named) if pid in ids or pid in roles]
+        parts = pieces(sents, ids)
+        mine = by_participant(parts, ids)
     wrong_way = precrash_wrong_way(sents)
     people = []
     parked: set[str] = set()

@@ -6,12 +6,15 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.choice import FrontEndError
+from sovarc.compiler.frontend.names import label_parties
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
 
-# V1, V-1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1
+# V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
-    r"\b(?:V-?(\d)|vehicle\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)(?![\w-]))", re.IGNORECASE
+    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
+    r"(?![\w-]))",
+    re.IGNORECASE,
 )
 _PEDESTRIAN = re.compile(r"\b(pedestrian|pedalcyclist|bicyclist|cyclist)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 _IMPACT = re.compile(
@@ -30,15 +33,20 @@ _NO_IMPACT = re.compile(
 def normalize_names(text: str) -> str:
     """Rewrite every way of naming a vehicle as V1, V2, ... and pedestrians as P1, P2, ..."""
 
+    def pedestrian(m: re.Match[str]) -> str:
+        return f"P{m.group(2) or 1}"
+
+    return _PEDESTRIAN.sub(pedestrian, number_vehicles(text))
+
+
+def number_vehicles(text: str) -> str:
+    """Rewrite every way of numbering a vehicle ("V 1", "Vehicle #1", "Unit 1") as V1, V2, ..."""
+
     def vehicle(m: re.Match[str]) -> str:
         raw = (m.group(1) or m.group(2)).lower()
         return f"V{_NUMBER_WORDS.get(raw, raw)}"
 
-    def pedestrian(m: re.Match[str]) -> str:
-        return f"P{m.group(2) or 1}"
-
-    text = _VEHICLE.sub(vehicle, text)
-    return _PEDESTRIAN.sub(pedestrian, text)
+    return _VEHICLE.sub(vehicle, text)
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words
@@ -101,8 +109,14 @@ def name_parked(text: str) -> str:
 
 
 def prepare(text: str) -> str:
-    """Every participant under one name: V1/P1 numbering, makes and body words, an unnumbered parked victim."""
-    return name_parked(resolve_aliases(normalize_names(text)))
+    """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
+    that name none: see `names`), makes and body words, an unnumbered parked victim."""
+    return name_parked(resolve_aliases(normalize_names(label_parties(number_vehicles(text))[0])))
+
+
+def naming_note(text: str) -> str | None:
+    """How the participants were numbered when the report does not number them itself."""
+    return label_parties(number_vehicles(text))[1]
 
 
 def sentences(text: str) -> list[str]:

@@ -1,0 +1,201 @@
+"""Participants named any way: reports that do not number their road users get numbers by a stated rule.
+
+A report that labels its parties ("a Zoox vehicle (Vehicle 1)", "a passenger car (V2)") keeps its labels:
+the phrase a label follows names that party from then on. A report that neither numbers nor labels them
+(NHTSA's SGO narratives: "the Waymo AV", "a passenger car", "the SUV") is numbered by rule: the automated
+vehicle is V1; the other road users the first impact sentence names are V2, V3, ... in the order it names
+them (when it names none besides V1, the last one named before it), and every later mention of one ("the
+passenger car", "the car", "the other vehicle") is it. Road users the impact does not involve stay unnamed:
+a bystander is no party. `label_parties` returns the rewritten text and a note saying which rule was used,
+for the scenario's notes.
+"""
+
+from __future__ import annotations
+
+import re
+
+# Words that qualify a road user without being one: "a dark colored Nissan passenger car".
+_STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
+_MODS = r"(?:" + _STOP + r"[\w.'-]+ ){0,3}?"
+# Road users by kind, longest first; the kind the IR gives each (a cyclist is read as a pedestrian, noted).
+_KINDS = (
+    r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
+    r"tractor[- ]trailer|school bus|"
+    r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
+    r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist"
+)
+_PEOPLE = frozenset(("pedestrian", "bicyclist", "cyclist", "pedalcyclist"))
+_USER = re.compile(r"\b(?:an?|the|another|one) " + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])", re.I)
+_OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist)\b", re.I)
+
+# The automated vehicle: "a Waymo Autonomous Vehicle", "the Waymo AV", "the Cruise AV", "the ADS vehicle",
+# "the test vehicle", "our vehicle", "the ego", "the subject vehicle".
+_AV_WORDS = (
+    r"(?:autonomous|automated|self-driving|driverless|ADS(?:[- ]equipped|[- ]operated|[- ]engaged)?|test|subject|"
+    r"ego) (?:vehicle|car|truck|shuttle|bus)|AV|ego(?: vehicle)?|robotaxi"
+)
+_NOT_BRAND = r"(?!(?:The|A|An|When|While|As|Then|And|But|After|Before|At|On|In|Our|Its)\b)"
+_AV = re.compile(
+    r"\b(?:(?i:a|an|the|our|its) )?(?:" + _NOT_BRAND + r"[A-Z][\w.]*(?:[- ][A-Z][\w.]*)? )?(?i:" + _AV_WORDS + r")"
+    r"\b(?![\w-])|\b(?i:our) (?:vehicle|car|truck|shuttle)\b"
+)
+# "A Zoox vehicle in autonomous mode", "an Aurora truck ... in autonomy": a brand's vehicle, when the report
+# says its vehicle drove itself.
+_BRAND = re.compile(
+    r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
+)
+_AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b", re.I)
+
+# "(Vehicle 1)", "(V2)", "("Vehicle #1")"
+_LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
+_LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LABEL.pattern, re.I)
+_IMPACT = re.compile(
+    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|rear[- ]end\w*|"
+    r"clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
+    re.I,
+)
+# A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
+_SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
+# Things a vehicle can hit that the IR has no role for.
+_THING = re.compile(
+    r"\b(?:an?|the) " + _MODS + r"(animal|dog|cat|deer|bird|pole|tree|bollard|curb|barrier|debris|tire shreds|"
+    r"cone|gate|sign|fence|wall|hydrant|pothole|shopping cart|object)s?\b",
+    re.I,
+)
+
+
+def _replace_phrase(text: str, phrase: str, pid: str) -> str:
+    """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id."""
+    return re.sub(
+        r"\b(?:an?|the|another|that|this) " + _MODS + re.escape(phrase) + r"\b(?![\w-])", pid, text, flags=re.I
+    )
+
+
+def _labels(text: str) -> tuple[str, str] | None:
+    """The report's own labels: "a Zoox vehicle (Vehicle 1)" names V1 "the Zoox vehicle" from then on."""
+    found = [m for m in _LABELLED.finditer(text) if not re.fullmatch(r"[VP]\d", m.group(1))]
+    if not found:
+        return None
+    words: dict[str, str] = {}
+    for m in found:
+        phrase = m.group(1).strip()
+        pid = f"V{m.group(2)}"
+        if phrase.lower().split()[-1] in _PEOPLE:
+            pid = f"P{m.group(2)}"
+        words.setdefault(phrase.lower(), pid)
+        words.setdefault(phrase.lower().split()[-1], pid)
+    text = _LABELLED.sub(lambda m: f"{'P' if m.group(1).lower().split()[-1] in _PEOPLE else 'V'}{m.group(2)}", text)
+    heads: dict[str, set[str]] = {}
+    for phrase, pid in words.items():
+        heads.setdefault(phrase, set()).add(pid)
+    for phrase in sorted(heads, key=len, reverse=True):
+        if len(heads[phrase]) == 1 and not re.fullmatch(r"vehicle|car", phrase):
+            text = _replace_phrase(text, phrase, next(iter(heads[phrase])))
+    named = ", ".join(f"{pid} '{p}'" for p, pid in sorted(words.items(), key=lambda kv: kv[1]))
+    return text, f"participants named by the report's own labels ({named})"
+
+
+def _automated(text: str) -> tuple[str, str] | None:
+    """Every mention of the automated vehicle as V1, and the words first used for it."""
+    first = _AV.search(text)
+    brand = _BRAND.search(text) if _AUTONOMY.search(text) else None
+    if first is None and brand is None:
+        return None
+    if first is not None:
+        said = first.group()
+        text = _AV.sub("V1", text)
+        text = re.sub(r"\b(?:an?|the) [A-Z][\w.]* (?:vehicle|car|truck|shuttle)\b(?=\s*\(\"?V1\"?\))", "V1", text)
+    if brand is not None and (first is None or brand.start() < first.start() or brand.group(1) in said):
+        said = brand.group() if first is None else said
+        text = re.sub(
+            r"\b(?i:an?|the)(?: subject| test)? " + re.escape(f"{brand.group(1)} {brand.group(2)}") + r"\b", "V1", text
+        )
+    text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
+    return text, said
+
+
+# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle".
+_SAME = {"passenger vehicle": "passenger car", "pick-up truck": "pickup truck", "sport utility vehicle": "suv"}
+_SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Following)\b[^,]*, ", re.I)
+
+
+def _head(m: re.Match[str]) -> str:
+    return _SAME.get(m.group(1).lower(), m.group(1).lower())
+
+
+def _others(text: str) -> list[tuple[str, str]]:
+    """The other road users in the first impact, as (kind, words first said), in the order it names them."""
+    from sovarc.compiler.frontend.text import sentences
+
+    sents = sentences(text)
+    impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
+    summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
+    for i in impacts + summaries:
+        # "After the pedestrians had crossed, an SUV ... made contact": an opening clause sets the scene
+        sentence = sents[i]
+        if (scene := _SCENE_CLAUSE.match(sentence)) and _IMPACT.search(sentence[scene.end() :]):
+            sentence = sentence[scene.end() :]
+        users: list[tuple[str, str]] = []
+        for m in _USER.finditer(sentence):
+            if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
+                users.append((_head(m), m.group()))
+        if users:
+            return users
+        before = [m for s in sents[:i] for m in _USER.finditer(s)]
+        return [(_head(before[-1]), before[-1].group())] if before else []
+    return []
+
+
+def label_parties(text: str) -> tuple[str, str | None]:
+    """The text with its parties numbered (see the module), and the note saying how; unchanged when the
+    report numbers them itself."""
+    if re.search(r"\bV1\b", _LABEL.sub(" ", text)):
+        return text, None  # numbered outside any labels: the report's own numbering
+    if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
+        # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
+        automated = _automated(text) if not _LABELLED.search(text) else None
+        if automated is None:
+            return text, None
+        return automated[0], f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
+    labelled = _labels(text)
+    if labelled is not None:
+        return labelled
+    automated = _automated(text)
+    if automated is None:
+        return text, None
+    text, said = automated
+    others = _others(text)
+    named: list[str] = []
+    counts = {"V": 1, "P": 0}
+    for kind, words in others:
+        role = "P" if kind in _PEOPLE else "V"
+        counts[role] += 1
+        pid = f"{role}{counts[role]}"
+        named.append(f"{pid} '{words}'")
+        for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
+            text = _replace_phrase(text, words_for, pid)
+        if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
+            text = _replace_phrase(text, kind.split()[-1], pid)  # "the car" for "a passenger car"
+        if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
+            text = _OTHER.sub(pid, text)
+    note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
+    if named:
+        note += "; the other road users in the first impact are " + ", ".join(named)
+    return text, note
+
+
+def partner_refusal(text: str) -> str | None:
+    """Why a report numbered by rule cannot be read: its automated vehicle hit something the IR has no role
+    for ("a pole", "an animal") and no road user; None when it can be."""
+    named, note = label_parties(text)
+    if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
+        return None
+    from sovarc.compiler.frontend.text import sentences
+
+    for sentence in sentences(named):
+        if _IMPACT.search(sentence) and (m := _THING.search(sentence)):
+            return (
+                f"the crash partner ('{m.group()}') is not a road user; the scenario IR holds vehicles and "
+                "pedestrians only"
+            )
+    return None
