@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.sentences import sentences
+
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
 _MODS = r"(?:" + _STOP + r"[\w.'-]+ ){0,3}?"
@@ -125,8 +127,6 @@ def _head(m: re.Match[str]) -> str:
 
 def _others(text: str) -> list[tuple[str, str]]:
     """The other road users in the first impact, as (kind, words first said), in the order it names them."""
-    from sovarc.compiler.frontend.text import sentences
-
     sents = sentences(text)
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
     summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
@@ -190,8 +190,6 @@ def partner_refusal(text: str) -> str | None:
     named, note = label_parties(text)
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
-    from sovarc.compiler.frontend.text import sentences
-
     for sentence in sentences(named):
         if _IMPACT.search(sentence) and (m := _THING.search(sentence)):
             return (

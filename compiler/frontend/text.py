@@ -7,6 +7,7 @@ import re
 
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.names import label_parties
+from sovarc.compiler.frontend.sentences import sentences
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
 
@@ -117,14 +118,6 @@ def prepare(text: str) -> str:
 def naming_note(text: str) -> str | None:
     """How the participants were numbered when the report does not number them itself."""
     return label_parties(number_vehicles(text))[1]
-
-
-def sentences(text: str) -> list[str]:
-    """Split on sentence ends, also where reports omit the space after a period."""
-    text = re.sub(r"\s+", " ", text)
-    text = re.sub(r"(?<=[a-z0-9)])\.(?=[A-Z])", ". ", text)
-    parts = re.split(r"(?<=[.!?])\s+(?=[A-Z\"(])", text)
-    return [p.strip() for p in parts if p.strip()]
 
 
 def participants(text: str) -> list[str]:
