@@ -36,10 +36,9 @@ class Emitted:
     artifacts: Artifacts
 
 
-def target_options(target: str, *, seed: int = 0, ego: str | None = None, osc_version: str | None = None,
-                   **values: Any) -> Any:  # fmt: skip
-    """A registered target's Options from command-line values by flag destination (None: its default)."""
-    return options_from(registry.get(target), {"seed": seed, "ego": ego, "osc_version": osc_version, **values})
+def target_options(target: str, *, seed: int = 0, **values: Any) -> Any:
+    """A registered target's Options from command-line values by flag destination (None or absent: its default)."""
+    return options_from(registry.get(target), {"seed": seed, **values})
 
 
 def emit_target(target: str, plan: Plan, folder: Path, options: Any) -> Emitted:

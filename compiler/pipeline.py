@@ -51,9 +51,8 @@ class Options:
     spare: int | None = None  # extra sites tried in place of failed ones; None: default_spare(roads)
     targets: tuple[str, ...] = ()  # checked by the check stage
     out_dir: Path | None = None  # emit and check write one folder per site here; None: nothing is written
-    ego: str | None = None  # the fmu target's driving system under test (None: the reference ego)
-    osc_version: str | None = None  # the OpenSCENARIO version written (None: the target's default)
-    target_values: dict[str, Any] = field(default_factory=dict)  # other targets' options, by flag destination
+    # the targets' own options (--ego, --osc-version, ...) by flag destination, as the registry declares them
+    target_values: dict[str, Any] = field(default_factory=dict)
 
 
 @dataclass
@@ -185,8 +184,7 @@ def _emit(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
         result.folder = options.out_dir / folder_name(result.site)
         write_plan_files(result.plan, result.road_map, result.folder)
         for target in options.targets:
-            values = {"seed": options.seed, "ego": options.ego, "osc_version": options.osc_version}
-            chosen = target_options(target, **values, **options.target_values)
+            chosen = target_options(target, seed=options.seed, **options.target_values)
             result.emitted[target] = emit_target(target, result.plan, result.folder, chosen)
     return result
 

@@ -33,13 +33,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         roads=args.roads,
         spare=args.spare_sites,
         targets=args.target or (),
-        ego=args.ego,
-        osc_version=args.osc_version,
-        target_values={
-            f.dest: getattr(args, f.dest)
-            for f in registry.all_flags()
-            if not f.shared and f.dest not in ("ego", "osc_version")
-        },
+        target_values={f.dest: getattr(args, f.dest) for f in registry.all_flags() if not f.shared},
     )
 
     def after(stage: Stage, value: Any) -> None:
