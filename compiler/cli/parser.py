@@ -17,7 +17,6 @@ except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
 # The OpenSCENARIO versions the target writes, as its --osc-version option declares them.
-OSC_VERSIONS: tuple[str, ...] = next(f.choices or () for f in registry.all_flags() if f.flag == "--osc-version")
 
 DESCRIPTION = """\
 sovarc compiles a police crash report into executable driving-test scenarios.

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from lxml import etree
-from sovarc.compiler.cli.parser import OSC_VERSIONS
+from sovarc.targets import contract, registry
 from sovarc.targets.openscenario import DEFAULT_VERSION, VERSIONS, check
 from sovarc.targets.openscenario.readback import read_scenario
 from sovarc.targets.openscenario.validation import xsd_finding
@@ -16,8 +16,9 @@ from tests.compiler.cli.test_cli import LEFT_TURN, sovarc
 
 
 def test_the_cli_offers_the_versions_the_target_writes() -> None:
-    assert OSC_VERSIONS == VERSIONS
-    assert OSC_VERSIONS[-1] == DEFAULT_VERSION
+    (version_flag,) = (f for f in contract.flags(registry.get("openscenario")) if f.choices)
+    assert version_flag.choices == VERSIONS
+    assert VERSIONS[-1] == DEFAULT_VERSION
     assert "--osc-version {1.0,1.1,1.2,1.3}" in sovarc("run", "--help").stdout.replace("\n", " ")
 
 
