@@ -11,6 +11,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 
+from sovarc.compiler.cli.batch import cmd_batch
 from sovarc.compiler.cli.common import UsageError
 from sovarc.compiler.cli.eval import cmd_eval
 from sovarc.compiler.cli.files import (
@@ -42,6 +43,7 @@ HANDLERS: dict[str, Callable[[argparse.Namespace], int]] = {
     "convert": cmd_convert,
     "schema": cmd_schema,
     "sites": cmd_sites,
+    "batch": cmd_batch,
 }
 
 

@@ -11,19 +11,21 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from sovarc.compiler.batch.tasks import worker_map
+from sovarc.compiler.cli.batch import executor_of
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
 from sovarc.compiler.evaluation.extraction import evaluate_extraction
-from sovarc.compiler.evaluation.srr import map_key, reconstruct, sov_files, srr_table
+from sovarc.compiler.evaluation.srr import SrrTask, map_key, run_srr_task, sov_files, srr_table
 from sovarc.compiler.evaluation.tests import load_ego, scenario_files, tests_table
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
 from sovarc.compiler.pipeline import default_map
-from sovarc.compiler.progress import progress
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import folder_name
 from sovarc.dsl import verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
 from sovarc.dsl.ir import Scenario
+from tqdm import tqdm
 
 
 def cmd_eval(args: argparse.Namespace) -> int:
@@ -42,7 +44,7 @@ def cmd_eval_extraction(args: argparse.Namespace) -> int:
     reporter = Reporter()
     front_end = make_front_end(args)
     report = evaluate_extraction(
-        progress(truths, len(truths), "eval extraction"),
+        tqdm(truths, desc="eval extraction", unit="report", disable=None),
         Path(args.reports),
         front_end,
         on_error=lambda path, exc: reporter.error(exc, None, str(path)),
@@ -62,16 +64,25 @@ def cmd_eval_extraction(args: argparse.Namespace) -> int:
 
 
 def cmd_eval_srr(args: argparse.Namespace) -> int:
-    """The scenario reconstruction rate of the SUMO oracle, per road kind (the paper's Tables 4 and 5)."""
+    """The scenario reconstruction rate of the SUMO oracle, per road kind (the paper's Tables 4 and 5).
+    Every scenario x map is a task on the executor (-j, --executor); the rows are kept in file order,
+    so the figures and the JSON are the same however many workers ran them."""
     files = sorted(p for name in args.scenarios for p in sov_files(Path(name)))
     maps = args.map or [str(default_map())]
-    report: dict[str, dict[str, object]] = {}
     for map_path in maps:
-        road_map = load_map(map_path)
-        rows: list[dict[str, Any]] = []
-        for path in progress(files, len(files), label=f"srr {Path(map_path).name}"):
-            scenario, _ = load_scenario(path)
-            rows += reconstruct(scenario, path, road_map, roads=args.roads, seed=args.seed, spare=args.spare_sites)
+        worker_map(map_path)  # a bad map is said before any task runs (and an .xodr is converted once)
+    tasks = [SrrTask(str(path), str(m), args.roads, args.seed, args.spare_sites) for m in maps for path in files]
+    done: list[list[dict[str, Any]]] = [[] for _ in tasks]
+    executor = executor_of(args)
+    try:
+        for index, rows in tqdm(executor.run(run_srr_task, tasks), total=len(tasks), desc="srr", unit="task",
+                                disable=None):  # fmt: skip
+            done[index] = rows
+    finally:
+        executor.close()
+    report: dict[str, dict[str, object]] = {}
+    for number, map_path in enumerate(maps):
+        rows = [row for chunk in done[number * len(files) : (number + 1) * len(files)] for row in chunk]
         key = map_key(map_path, maps)
         report[key] = {"rows": rows}
         print(srr_table(key, rows))

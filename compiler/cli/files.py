@@ -11,10 +11,10 @@ from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end, sou
 from sovarc.compiler.frontend import scenario_name
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.progress import progress
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
 from sovarc.dsl import Severity, SovarcError, diff, json_schema, read_source, to_text, verify, verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
+from tqdm import tqdm
 
 
 def cmd_check(args: argparse.Namespace) -> int:
@@ -118,7 +118,7 @@ def cmd_import_truth(args: argparse.Namespace) -> int:
     _refuse_shared_outputs({str(path): f"{path.parent.name}_{path.stem}" for path in files}, args.output)
     reporter = Reporter()
     written = 0
-    for path in progress(files, len(files), "import-truth"):
+    for path in tqdm(files, desc="import-truth", unit="file", disable=None):
         reports = Path(args.reports) if args.reports else path.parent.parent.parent / "reports"
         try:
             imported = import_truth_file(path, reports if reports.is_dir() else None)
@@ -142,7 +142,7 @@ def cmd_extract(args: argparse.Namespace) -> int:
     reporter = Reporter()
     written = 0
     front_end = make_front_end(args)
-    for name in progress(args.reports, len(args.reports), "extract"):
+    for name in tqdm(args.reports, desc="extract", unit="report", disable=None):
         try:
             source = read_source(name, "crash report")
             extraction = front_end.extract(source)

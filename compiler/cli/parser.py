@@ -7,6 +7,7 @@ from importlib.metadata import PackageNotFoundError, version
 from typing import Any
 
 import sovarc.targets.registry as registry
+from sovarc.compiler.cli.batch import add_batch_parser, add_executor_options
 from sovarc.compiler.cli.common import add_llm_options
 from sovarc.compiler.cli.sites import add_sites_parser
 from sovarc.compiler.pipeline import STAGE_NAMES
@@ -33,6 +34,7 @@ Front end and evaluation:
   sovarc extract examples/reports/*.txt -o out/          one .sov per report
   sovarc eval extraction --reports DIR --truth DIR       accuracy per attribute (the paper's Table 3)
   sovarc eval srr truth/ -m MAP --roads 3                reconstruction rate in SUMO (Tables 4 and 5)
+  sovarc batch reports/ -m MAP -m MAP2 -t all -o out     many inputs x maps, on every core, resumable
 
 Tools for the scenario IR:
   sovarc check examples/scenarios/*.sov     report every error and warning, compiler style
@@ -57,6 +59,7 @@ COMMANDS: dict[str, str] = {
     "eval": "measure the compiler against ground truth (extraction, srr, tests)",
     "lower": "stage a scenario on a map's sites and write the timed plan",
     "sites": "list (and draw) the sites a map offers, per road kind",
+    "batch": "compile many reports or scenarios on several maps, in parallel, resumable",
 }
 
 
@@ -125,6 +128,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     _add_lower_parser(sub, COMMANDS["lower"], _formatter)
     add_sites_parser(sub, COMMANDS["sites"], _formatter)
+    add_batch_parser(sub, COMMANDS["batch"], _formatter, add_target_options)
 
     check = sub.add_parser(
         "check",
@@ -341,6 +345,7 @@ def _add_srr_parser(which: Any, formatter: Any) -> None:
     add_spare_option(srr)
     srr.add_argument("--seed", type=int, default=0, help="seed for the choice of sites (default 0)")
     srr.add_argument("--json", help="also write every scenario-site's result here")
+    add_executor_options(srr)
 
 
 def _add_tests_parser(which: Any, formatter: Any) -> None:

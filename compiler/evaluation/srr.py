@@ -10,13 +10,16 @@ from __future__ import annotations
 
 import tempfile
 from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import sovarc.targets.registry as registry
+from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
+from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import Scenario
@@ -66,6 +69,24 @@ def reconstruct(
     missing = roads - len(results)
     rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
     return rows
+
+
+@dataclass(frozen=True)
+class SrrTask:
+    """One scenario on one map: plain data, so any executor can run it in another process."""
+
+    scenario: str  # a .sov or .json file
+    map: str
+    roads: int
+    seed: int = 0
+    spare: int | None = None
+
+
+def run_srr_task(task: SrrTask) -> list[Row]:
+    """The task's rows; the map is loaded once per worker process."""
+    scenario, _ = load_scenario(task.scenario)
+    road_map = worker_map(task.map)
+    return reconstruct(scenario, Path(task.scenario), road_map, roads=task.roads, seed=task.seed, spare=task.spare)
 
 
 def replay(plan: Plan) -> Verdict:

@@ -21,7 +21,6 @@ from sovarc.compiler.evaluation.baseline import random_tests
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
-from sovarc.compiler.progress import progress
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import InputError, SovarcError, SynthesisError, UnsatError
 from sovarc.dsl.ir import RoadKind, Scenario
@@ -29,6 +28,7 @@ from sovarc.targets.fmu import EgoFmu, egos, reference_fmu, run_test_results, va
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
 from sovarc.targets.fmu.runner import Method
 from sovarc.targets.verdict import Verdict
+from tqdm import tqdm
 
 METHODS: tuple[Method, ...] = ("report", "random")
 KINDS: tuple[str, ...] = tuple(k.value for k in RoadKind)
@@ -237,7 +237,7 @@ def tests_table(
     given); a scenario-site that cannot be planned is counted, with its reason, and has no tests."""
     table = TestsTable()
     options = Options(map=road_map, roads=roads, seed=seed, spare=spare)
-    for scenario in progress(scenarios, len(scenarios), label=f"tests {road_map.name}"):
+    for scenario in tqdm(scenarios, desc=f"tests {road_map.name}", unit="scenario", disable=None):
         kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
         try:
             results = stage_sites(scenario, options)
