@@ -173,3 +173,20 @@ def test_batch_help_teaches_resuming_and_the_executors() -> None:
     text = sovarc("batch", "--help").stdout
     for words in ("A rerun skips the tasks already finished", "--executor {local,ray}", "manifest.csv", "-j N"):
         assert words in text.replace("\n", " ").replace("  ", " ") or words in text
+
+
+@pytest.mark.slow  # lowering, synthesis and SUMO replays
+def test_eval_srr_gives_the_same_json_with_one_worker_or_two(tmp_path: Path) -> None:
+    chosen = [str(p) for p in SCENARIOS[::5]]
+    outputs = []
+    for jobs in ("1", "2"):
+        out = tmp_path / f"srr{jobs}.json"
+        result = batch_eval("srr", *chosen, "-m", str(TOWN), "--roads", "2", "-j", jobs, "--json", str(out))
+        assert result.returncode == 0, result.stderr
+        outputs.append((result.stdout, out.read_bytes()))
+    assert outputs[0] == outputs[1]
+    assert "SRR on town.net.xml" in outputs[0][0]
+
+
+def batch_eval(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([SOVARC, "eval", *args], capture_output=True, text=True, timeout=900)
