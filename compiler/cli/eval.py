@@ -16,15 +16,13 @@ from sovarc.compiler.cli.batch import executor_of
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
 from sovarc.compiler.evaluation.extraction import evaluate_extraction
 from sovarc.compiler.evaluation.srr import SrrTask, map_key, run_srr_task, sov_files, srr_table
-from sovarc.compiler.evaluation.tests import load_ego, scenario_files, tests_table
+from sovarc.compiler.evaluation.tests import TestsTable, TestsTask, load_ego, merged, run_tests_task, scenario_files
 from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.maps import load_map
 from sovarc.compiler.pipeline import default_map
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import folder_name
 from sovarc.dsl import verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
-from sovarc.dsl.ir import Scenario
 from tqdm import tqdm
 
 
@@ -92,30 +90,46 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
 
 
 def cmd_eval_tests(args: argparse.Namespace) -> int:
-    """Ego failures of report-derived tests against random ones, per map (the paper's Table 6)."""
-    scenarios: list[Scenario] = []
-    for path in scenario_files(args.scenarios):  # every input is read and checked before the long run starts
+    """Ego failures of report-derived tests against random ones, per map (the paper's Table 6). Every
+    scenario x map is a task on the executor; the tables are merged in task order."""
+    files = scenario_files(args.scenarios)
+    for path in files:  # every input is read and checked before the long run starts
         scenario, _ = load_scenario(path)
         verify_or_raise(scenario)
-        scenarios.append(scenario)
     ego = load_ego(args.ego)
+    maps = args.map or [str(default_map())]
+    tasks = []
+    for map_path in maps:
+        worker_map(map_path)  # a bad map is said before any task runs
+        out = str(Path(args.output) / folder_name(Path(map_path).name)) if args.output else None
+        tasks += [
+            TestsTask(
+                str(path),
+                str(map_path),
+                str(ego.path),
+                args.roads,
+                args.seed,
+                args.spare_sites,
+                args.baseline == "random",
+                out,
+            )
+            for path in files
+        ]
+    done: list[TestsTable | None] = [None] * len(tasks)
+    executor = executor_of(args)
+    try:
+        for index, table in tqdm(executor.run(run_tests_task, tasks), total=len(tasks), desc="tests", unit="task",
+                                 disable=None):  # fmt: skip
+            done[index] = table
+    finally:
+        executor.close()
     report: dict[str, Any] = {}
-    for map_path in args.map or [str(default_map())]:
+    for number, map_path in enumerate(maps):
         name = Path(map_path).name
-        out = Path(args.output) / folder_name(name) if args.output else None
-        table = tests_table(
-            scenarios,
-            load_map(map_path),
-            ego,
-            roads=args.roads,
-            seed=args.seed,
-            spare=args.spare_sites,
-            baseline=args.baseline == "random",
-            out_dir=out,
-        )
+        table = merged(t for t in done[number * len(files) : (number + 1) * len(files)] if t is not None)
         report[name] = table.to_json()
         if not args.json:
-            title = f"Ego failures of {ego.model_name} on {name}: {len(scenarios)} scenario(s) x {args.roads} site(s)"
+            title = f"Ego failures of {ego.model_name} on {name}: {len(files)} scenario(s) x {args.roads} site(s)"
             print(table.render(title))
     if args.json:
         print(json.dumps(report, indent=2, ensure_ascii=False))

@@ -366,3 +366,4 @@ def _add_tests_parser(which: Any, formatter: Any) -> None:
     tests.add_argument("--seed", type=int, default=0, help="seed for the sites and the random NPCs (default 0)")
     tests.add_argument("--json", action="store_true", help="print the figures and every verdict as JSON")
     tests.add_argument("-o", "--output", help="write each test's verdict, and a PNG of each failed test, under here")
+    add_executor_options(tests)

@@ -14,13 +14,16 @@ import statistics
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
+from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.evaluation.baseline import random_tests
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
+from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import InputError, SovarcError, SynthesisError, UnsatError
 from sovarc.dsl.ir import RoadKind, Scenario
@@ -28,7 +31,6 @@ from sovarc.targets.fmu import EgoFmu, egos, reference_fmu, run_test_results, va
 from sovarc.targets.fmu.oracle import FAILURE_CLASSES, VIOLATIONS
 from sovarc.targets.fmu.runner import Method
 from sovarc.targets.verdict import Verdict
-from tqdm import tqdm
 
 METHODS: tuple[Method, ...] = ("report", "random")
 KINDS: tuple[str, ...] = tuple(k.value for k in RoadKind)
@@ -80,6 +82,16 @@ class TestsTable:
     simulated: list[float] = field(default_factory=list)  # s of simulated time per test
 
     __test__ = False  # not a pytest class
+
+    def merge(self, other: TestsTable) -> None:
+        """Add another table's tests after this one's (the tables of tasks run apart, in task order)."""
+        for key, tally in other.tallies.items():
+            self.tallies.setdefault(key, Tally()).merge(tally)
+        self.verdicts += other.verdicts
+        self.planned.update(other.planned)
+        self.unplanned += other.unplanned
+        self.walls += other.walls
+        self.simulated += other.simulated
 
     def add(self, kind: str, method: Method, verdict: Verdict) -> None:
         self.tallies.setdefault((str(kind), method), Tally()).add(verdict)
@@ -222,8 +234,32 @@ def evaluate_tests(
     return table
 
 
-def tests_table(
-    scenarios: list[Scenario],
+@dataclass(frozen=True)
+class TestsTask:
+    """One scenario's tests on one map: plain data, so any executor can run it in another process."""
+
+    scenario: str  # a .sov or .json file
+    map: str
+    ego: str | None  # the FMU under test; None: the reference ego
+    roads: int
+    seed: int = 0
+    spare: int | None = None
+    baseline: bool = True
+    out_dir: str | None = None
+
+    __test__ = False  # not a pytest class
+
+
+def run_tests_task(task: TestsTask) -> TestsTable:
+    """The task's scenario and its tests; the map and the ego are loaded once per worker process."""
+    scenario, _ = load_scenario(task.scenario)
+    out_dir = Path(task.out_dir) if task.out_dir else None
+    return scenario_tests(scenario, worker_map(task.map), _ego(task.ego), roads=task.roads, seed=task.seed,
+                          spare=task.spare, baseline=task.baseline, out_dir=out_dir)  # fmt: skip
+
+
+def scenario_tests(
+    scenario: Scenario,
     road_map: RoadMap,
     ego: EgoFmu,
     *,
@@ -233,27 +269,44 @@ def tests_table(
     baseline: bool = True,
     out_dir: Path | None = None,
 ) -> TestsTable:
-    """Plan every scenario on `roads` sites of the map and run its tests (writing them under out_dir, if
+    """Plan a scenario on `roads` sites of the map and run its tests (writing them under out_dir, if
     given); a scenario-site that cannot be planned is counted, with its reason, and has no tests."""
     table = TestsTable()
     options = Options(map=road_map, roads=roads, seed=seed, spare=spare)
-    for scenario in tqdm(scenarios, desc=f"tests {road_map.name}", unit="scenario", disable=None):
-        kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
-        try:
-            results = stage_sites(scenario, options)
-        except SovarcError as exc:  # facts no road can reconcile, or no site of its kind
-            why = "unsat" if isinstance(exc, UnsatError) else "no fitting site"
-            for _ in range(roads):
-                table.add_unplanned(scenario.name, kind, "-", why, first_message(exc))
-            continue
-        for r in results:
-            if r.plan is None:
-                table.add_unplanned(scenario.name, kind, r.site, _why(r.error), first_message(r.error))
-            else:
-                table.add_plan(r.plan, road_map, ego, seed, baseline=baseline, out_dir=out_dir)
-        for _ in range(roads - len(results)):
-            table.add_unplanned(scenario.name, kind, "-", "no fitting site", "fewer fitting sites than asked")
+    kind = scenario.road.kind.value if isinstance(scenario.road.kind, RoadKind) else "unknown"
+    try:
+        results = stage_sites(scenario, options)
+    except SovarcError as exc:  # facts no road can reconcile, or no site of its kind
+        why = "unsat" if isinstance(exc, UnsatError) else "no fitting site"
+        for _ in range(roads):
+            table.add_unplanned(scenario.name, kind, "-", why, first_message(exc))
+        return table
+    for r in results:
+        if r.plan is None:
+            table.add_unplanned(scenario.name, kind, r.site, _why(r.error), first_message(r.error))
+        else:
+            table.add_plan(r.plan, road_map, ego, seed, baseline=baseline, out_dir=out_dir)
+    for _ in range(roads - len(results)):
+        table.add_unplanned(scenario.name, kind, "-", "no fitting site", "fewer fitting sites than asked")
     return table
+
+
+def tests_table(scenarios: Iterable[Scenario], road_map: RoadMap, ego: EgoFmu, **options: Any) -> TestsTable:
+    """Every scenario's tests on one map, one after another in this process (`scenario_tests`' options)."""
+    return merged(scenario_tests(s, road_map, ego, **options) for s in scenarios)
+
+
+@lru_cache(maxsize=2)
+def _ego(path: str | None) -> EgoFmu:
+    """Each worker process validates (and, for the reference ego, builds) the FMU once."""
+    return load_ego(path)
+
+
+def merged(tables: Iterable[TestsTable]) -> TestsTable:
+    whole = TestsTable()
+    for table in tables:
+        whole.merge(table)
+    return whole
 
 
 def scenario_files(names: list[str]) -> list[Path]:

@@ -89,3 +89,12 @@ def test_help_shows_the_truth_example() -> None:
     assert (
         "tests     ego failures: report-derived tests against random ones (Table 6)" in sovarc("eval", "--help").stdout
     )
+
+
+@pytest.mark.slow  # lowering, synthesis, SUMO and the reference FMU, in two worker processes
+def test_two_workers_give_the_same_json_as_one(tmp_path: Path) -> None:
+    args = ("eval", "tests", str(WRONG_WAY), str(STOPPED_TRAFFIC), "--roads", "1", "--json")
+    one, two = sovarc(*args, "-j", "1"), sovarc(*args, "-j", "2")
+    assert one.returncode == 0 and two.returncode == 0, one.stderr + two.stderr
+    assert one.stdout == two.stdout
+    assert json.loads(one.stdout)["town.net.xml"]["rows"]["straight"]["planned"] == 2
