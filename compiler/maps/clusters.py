@@ -96,24 +96,33 @@ def _joined(roads: RoadNet, junctions: list[Any], ids: set[str], width: dict[str
             other = edge.getToNode()
             if is_road(edge) and other.getID() in ids and other is not node and close(node, other):
                 pairs.add(tuple(sorted((node.getID(), other.getID()))))  # type: ignore[arg-type]
-    # a road whose directions end at two nodes: an incoming carriageway at one, an outgoing one at the other
-    ends: dict[str, list[tuple[Any, Any]]] = {}
+    # a road whose two directions end at two nodes (a divided road, a side road split at its mouth):
+    # a one-way incoming arm at one node beside a one-way outgoing arm of the same heading at the other
+    halves = {
+        n.getID(): [a for a in roads.arms[n.getID()] if (a.incoming is None) != (a.outgoing is None)] for n in junctions
+    }
+    cell = 2.0 * JOIN_WIDTHS * max(width.values(), default=1.0) or 1.0
+    grid: dict[tuple[int, int], list[Any]] = {}
     for node in junctions:
-        for arm in roads.arms[node.getID()]:
-            if arm.incoming is not None and arm.outgoing is None:
-                far = arm.incoming.getFromNode().getID()
-                ends.setdefault(far, []).append((node, arm))
-            if arm.outgoing is not None and arm.incoming is None:
-                far = arm.outgoing.getToNode().getID()
-                ends.setdefault(far, []).append((node, arm))
-    for members in ends.values():
-        for k, (a, arm_a) in enumerate(members):
-            for b, arm_b in members[k + 1 :]:
-                if a is b or (arm_a.incoming is None) == (arm_b.incoming is None) or not close(a, b):
-                    continue
-                if abs(angle_diff(arm_a.heading, arm_b.heading)) <= PAIR_TOLERANCE:
-                    pairs.add(tuple(sorted((a.getID(), b.getID()))))  # type: ignore[arg-type]
+        if halves[node.getID()]:
+            x, y = node.getCoord()[:2]
+            grid.setdefault((int(x // cell), int(y // cell)), []).append(node)
+    for (i, j), here in sorted(grid.items()):
+        near = [n for di in (-1, 0, 1) for dj in (-1, 0, 1) for n in grid.get((i + di, j + dj), [])]
+        for a in here:
+            for b in near:
+                if a.getID() < b.getID() and close(a, b) and _split_road(halves[a.getID()], halves[b.getID()]):
+                    pairs.add((a.getID(), b.getID()))
     return pairs
+
+
+def _split_road(at_a: list[NodeArm], at_b: list[NodeArm]) -> bool:
+    """Whether one node's one-way arms and the other's hold the two directions of one road."""
+    return any(
+        (x.incoming is None) != (y.incoming is None) and abs(angle_diff(x.heading, y.heading)) <= PAIR_TOLERANCE
+        for x in at_a
+        for y in at_b
+    )
 
 
 def _cluster(roads: RoadNet, members: list[Any]) -> Cluster | None:
