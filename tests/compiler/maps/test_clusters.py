@@ -76,3 +76,23 @@ def test_a_scenario_turns_across_the_median_of_a_clustered_t(tmp_path: Path) -> 
     samples = next(t.samples for t in plan.trajectories if t.participant == "V1")
     steps = [((p.x - q.x) ** 2 + (p.y - q.y) ** 2) ** 0.5 for p, q in itertools.pairwise(samples)]
     assert max(steps) < 5.0  # a continuous path through both nodes
+
+
+def test_two_divided_roads_crossing_are_one_cross(tmp_path: Path) -> None:
+    # four nodes at the corners of the square where the carriageways cross, 12 m apart
+    g = 12
+    nodes = {"a": (0, 0), "b": (g, 0), "c": (g, g), "d": (0, g), "W1": (-200, 0), "E1": (200, 0), "E2": (200, g)}
+    nodes |= {"W2": (-200, g), "S1": (0, -200), "S2": (g, -200), "N1": (g, 200), "N2": (0, 200)}
+    ways = ["eb W1 a b E1", "wb E2 c d W2", "nb S2 b c N1", "sb N2 d a S1"]  # each carriageway through two corners
+    edges = [
+        f"{w}{k} {a} {b} 2 oneway"
+        for w, *path in (s.split() for s in ways)
+        for k, (a, b) in enumerate(itertools.pairwise(path))
+    ]
+    road_map = build(tmp_path, nodes, edges)
+    (cross,) = find_sites(road_map, X)
+    assert T not in kinds(road_map) and cross.id == "junction:a+b+c+d"
+    assert all(arm.two_way and len(arm.incoming) == 2 for arm in cross.arms)
+    moves = {(c.from_lane, c.direction): c.edges for c in cross.connections}
+    assert moves[("eb0_1", "l")] == ("eb1", "nb1")  # a left turn runs on two of the square's sides
+    assert moves[("eb0_0", "s")] == ("eb1",) and moves[("eb0_0", "r")] == ()
