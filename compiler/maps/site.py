@@ -50,7 +50,8 @@ class Arm:
 class Site:
     """A place of one road kind where a scenario can happen."""
 
-    # 'junction:<SUMO junction id>', or 'road:<direction>[|<other direction>]', a direction named by its
+    # 'junction:<SUMO junction id>' ('<id>+<id>...' for a junction of several nodes, clusters.py), or
+    # 'road:<direction>[|<other direction>]', a direction named by its
     # first edge ('<first>..<last>' over several), with '@<m>' when it begins or ends inside an edge
     id: str
     kind: RoadKind
@@ -58,8 +59,8 @@ class Site:
     orientation: float  # degrees in [-45, 45): the compass cross's offset from true north
     arms: tuple[Arm, ...]  # sorted by slot
     connections: tuple[Connection, ...] = ()  # sorted by (from_lane, to_lane); none on a straight road
-    junction: str | None = None  # SUMO junction id
-    control: str | None = None  # SUMO junction type: priority, traffic_light, right_before_left, ...
+    junction: str | None = None  # SUMO junction id ('<id>+<id>...' over several nodes)
+    control: str | None = None  # SUMO junction type: priority, traffic_light, ... ('/'-joined over several kinds)
 
     def arm_in_slot(self, slot: int) -> Arm | None:
         return next((arm for arm in self.arms if arm.slot == slot % 4), None)

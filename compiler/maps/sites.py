@@ -15,7 +15,9 @@ Roads are read as a person sees them, not edge by edge (roads.py): a road runs o
 nodes netconvert adds where lanes begin or end, so a junction's arm reaches back through them
 (while its lane count stays, up to ARM_REACH) and a straight site is a stretch of bounded
 curvature along a road, wherever its edges split (straights.py). Such a lane is a chain of SUMO
-lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings.
+lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings, and a
+junction netconvert built as several nodes (a divided road's carriageways each meeting a side
+road at a node of its own, a junction split by short edges) is one junction (clusters.py).
 
 Each site lays a compass cross over its arms (`Site.orientation`, `Arm.slot`): arm slot k
 ideally has heading `orientation + 90 * k`. The site search rotates reports on this cross.
