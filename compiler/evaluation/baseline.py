@@ -72,7 +72,7 @@ def _random_trajectory(plan: Plan, template: Trajectory, site: Site, net: Net, r
         return _walker(plan, template, site, rng)
     if site.connections:
         link = rng.choice(site.connections)
-        parts = [link.from_lane] + ([link.via] if link.via else []) + [link.to_lane]
+        parts = [link.from_lane, *link.path, link.to_lane]
         shapes = [net.getLane(lane).getShape() for lane in parts]
         arrive_at = Polyline(shapes[0], min_gap=PATH_GAP).length
         limit = net.getLane(link.from_lane).getSpeed()

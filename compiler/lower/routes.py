@@ -218,6 +218,7 @@ def _junction_line(
     else:
         turn = Polyline([end, *shape, target.shape[0]])
     drive.lanes.update(_via_lanes(road_map, connection))
+    drive.edges.extend(edge for edge in connection.edges if edge not in drive.edges)
     return turn, corridor, target.number
 
 
@@ -300,16 +301,9 @@ def _lane(match: SiteMatch, lane_id: str) -> LaneInfo:
 
 
 def _via_chain(road_map: RoadMap, connection: Connection) -> list[Any]:
-    """The internal lanes a connection runs on, in order (SUMO splits some left turns in two)."""
-    chain: list[Any] = []
-    via = connection.via
-    while via:
-        lane = road_map.net.getLane(via)
-        chain.append(lane)
-        via = next((c.getViaLaneID() for c in lane.getOutgoing() if c.getViaLaneID()), None)
-        if len(chain) > 4:
-            break
-    return chain
+    """The SUMO lanes a connection runs on between its two lanes, in order (SUMO splits some left
+    turns in two; a junction of several nodes adds the short edges between them)."""
+    return [road_map.net.getLane(lane) for lane in connection.path]
 
 
 def _via_shape(road_map: RoadMap, connection: Connection) -> list[tuple[float, float]] | None:

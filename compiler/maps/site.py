@@ -23,7 +23,11 @@ class Connection:
     from_lane: str
     to_lane: str
     direction: str  # SUMO: s straight, l/L left/partly left, r/R right/partly right, t turnaround
-    via: str | None  # the internal lane that carries it, if the network has one
+    via: str | None  # the first internal lane that carries it, if the network has one
+    # every SUMO lane between from_lane and to_lane, in order: the internal lanes, and across a
+    # junction of several nodes (clusters.py) the lanes of the short edges between them
+    path: tuple[str, ...] = ()
+    edges: tuple[str, ...] = ()  # the short edges between a junction's nodes it drives, in order
 
 
 @dataclass(frozen=True)
@@ -46,7 +50,8 @@ class Arm:
 class Site:
     """A place of one road kind where a scenario can happen."""
 
-    # 'junction:<SUMO junction id>', or 'road:<direction>[|<other direction>]', a direction named by its
+    # 'junction:<SUMO junction id>' ('<id>+<id>...' for a junction of several nodes, clusters.py), or
+    # 'road:<direction>[|<other direction>]', a direction named by its
     # first edge ('<first>..<last>' over several), with '@<m>' when it begins or ends inside an edge
     id: str
     kind: RoadKind
@@ -54,8 +59,8 @@ class Site:
     orientation: float  # degrees in [-45, 45): the compass cross's offset from true north
     arms: tuple[Arm, ...]  # sorted by slot
     connections: tuple[Connection, ...] = ()  # sorted by (from_lane, to_lane); none on a straight road
-    junction: str | None = None  # SUMO junction id
-    control: str | None = None  # SUMO junction type: priority, traffic_light, right_before_left, ...
+    junction: str | None = None  # SUMO junction id ('<id>+<id>...' over several nodes)
+    control: str | None = None  # SUMO junction type: priority, traffic_light, ... ('/'-joined over several kinds)
 
     def arm_in_slot(self, slot: int) -> Arm | None:
         return next((arm for arm in self.arms if arm.slot == slot % 4), None)

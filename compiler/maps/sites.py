@@ -15,7 +15,9 @@ Roads are read as a person sees them, not edge by edge (roads.py): a road runs o
 nodes netconvert adds where lanes begin or end, so a junction's arm reaches back through them
 (while its lane count stays, up to ARM_REACH) and a straight site is a stretch of bounded
 curvature along a road, wherever its edges split (straights.py). Such a lane is a chain of SUMO
-lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings.
+lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings, and a
+junction netconvert built as several nodes (a divided road's carriageways each meeting a side
+road at a node of its own, a junction split by short edges) is one junction (clusters.py).
 
 Each site lays a compass cross over its arms (`Site.orientation`, `Arm.slot`): arm slot k
 ideally has heading `orientation + 90 * k`. The site search rotates reports on this cross.
@@ -26,6 +28,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
+from sovarc.compiler.maps.clusters import Cluster, junction_clusters, paths, vias
 from sovarc.compiler.maps.geometry import fit_frame
 from sovarc.compiler.maps.roads import CAR, LaneInfo, NodeArm, RoadNet, axis
 from sovarc.compiler.maps.site import Arm, Connection, Site
@@ -38,6 +41,8 @@ if TYPE_CHECKING:
 
 DEFAULT_MIN_LENGTH = 80.0  # m; a straight site must be at least this long
 CROSS_TOLERANCE = 35.0  # degrees an intersection's or T's arm may stray from its place in the cross
+# a turn by the exit arm's place in the cross, counted clockwise from the entry arm's (see search.py)
+TURNS = {0: "t", 1: "l", 2: "s", 3: "r"}
 ARM_REACH = 100.0  # m: a junction's arm reaches back this far through pass-through nodes (if its lanes stay)
 
 
@@ -67,10 +72,8 @@ def road_net(road_map: RoadMap) -> RoadNet:
 
 def _junction_sites(roads: RoadNet) -> list[Site]:
     sites = []
-    for node in roads.net.getNodes():
-        if not roads.is_junction(node):
-            continue
-        raw = [_arm_lanes(roads, arm) for arm in roads.arms[node.getID()]]
+    for cluster in junction_clusters(roads):
+        raw = [_arm_lanes(roads, arm) for arm in cluster.arms]
         if len(raw) not in (3, 4):
             continue
         frame = fit_frame([heading for _, heading, _, _ in raw])
@@ -84,19 +87,24 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
             key=lambda arm: arm.slot,
         )
         kind = RoadKind.INTERSECTION if len(raw) == 4 else RoadKind.T_JUNCTION
-        centre = node.getCoord()
-        incoming_edges = [a.incoming for a in roads.arms[node.getID()] if a.incoming is not None]
-        outgoing_ids = {a.outgoing.getID() for a in roads.arms[node.getID()] if a.outgoing is not None}
+        coords = [node.getCoord() for node in cluster.nodes]
+        centre = (sum(c[0] for c in coords) / len(coords), sum(c[1] for c in coords) / len(coords))
+        if len(cluster.nodes) == 1:
+            incoming_edges = [a.incoming for a in cluster.arms if a.incoming is not None]
+            outgoing_ids = {a.outgoing.getID() for a in cluster.arms if a.outgoing is not None}
+            connections = _connections(roads, incoming_edges, outgoing_ids)
+        else:
+            connections = _cluster_connections(roads, cluster, arms)
         sites.append(
             Site(
-                id=f"junction:{node.getID()}",
+                id=f"junction:{cluster.id}",
                 kind=kind,
                 centre=(round(centre[0], 3), round(centre[1], 3)),
                 orientation=frame.orientation,
                 arms=tuple(arms),
-                connections=_connections(incoming_edges, outgoing_ids),
-                junction=node.getID(),
-                control=node.getType(),
+                connections=connections,
+                junction=cluster.id,
+                control="/".join(sorted({node.getType() for node in cluster.nodes})),
             )
         )
     return sites
@@ -117,7 +125,7 @@ def _arm_lanes(roads: RoadNet, arm: NodeArm) -> tuple[str, float, tuple[LaneInfo
     return arm_id, round(heading, 6), incoming, outgoing
 
 
-def _connections(incoming: list[Any], outgoing_ids: set[str]) -> tuple[Connection, ...]:
+def _connections(roads: RoadNet, incoming: list[Any], outgoing_ids: set[str]) -> tuple[Connection, ...]:
     found = []
     for edge in incoming:
         for to_edge, links in edge.getOutgoing().items():
@@ -126,5 +134,26 @@ def _connections(incoming: list[Any], outgoing_ids: set[str]) -> tuple[Connectio
             for link in links:
                 src, dst = link.getFromLane(), link.getToLane()
                 if src.allows(CAR) and dst.allows(CAR):
-                    found.append(Connection(src.getID(), dst.getID(), link.getDirection(), link.getViaLaneID() or None))
+                    path = tuple(vias(roads, link))
+                    via = path[0] if path else None
+                    found.append(Connection(src.getID(), dst.getID(), link.getDirection(), via, path))
+    return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
+
+
+def _cluster_connections(roads: RoadNet, cluster: Cluster, arms: list[Arm]) -> tuple[Connection, ...]:
+    """Every way across a junction of several nodes, from an arm's incoming lane to another's (or
+    its own) outgoing lane, through the nodes and the short edges between them. Its direction is
+    read from the arms' places in the junction's compass cross: SUMO's own names the turn at
+    one node only (a left turn across a divided road is a 'straight on' and then a 'left')."""
+    exits = {lane.edge: arm for arm in arms for lane in arm.outgoing}
+    found = []
+    for arm in arms:
+        for lane in arm.incoming:
+            start = roads.net.getLane(lane.id)
+            for to, path, edges in paths(roads, cluster, start, set(exits)):
+                if not to.allows(CAR):
+                    continue
+                direction = TURNS[(exits[to.getEdge().getID()].slot - arm.slot) % 4]
+                via = next((x for x in path if x.startswith(":")), None)
+                found.append(Connection(lane.id, to.getID(), direction, via, path, edges))
     return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))

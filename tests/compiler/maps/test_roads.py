@@ -106,7 +106,9 @@ def test_a_divided_road_gives_one_way_sites(tmp_path: Path) -> None:
 
     with pytest.raises(LoweringError) as caught:
         match_sites(scenario("straight_double_yellow_pass_frontal"), road_map)
-    assert "; of its 2 straight roads, each participant alone fits: V1 0, V2 2" in caught.value.diagnostics[0].message
+    message = caught.value.diagnostics[0].message
+    assert "; none of its 2 straight roads is two-way throughout" in message  # the miss says why
+    assert "; of its 2 straight roads, each participant alone fits: V1 0, V2 2" in message
 
 
 def test_junctions_are_recognised_by_their_arms_headings(tmp_path: Path) -> None:
