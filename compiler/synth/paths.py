@@ -13,8 +13,10 @@ Pedestrians walk the route's line itself.
 
 from __future__ import annotations
 
+import bisect
+import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from ompl import base as ob
@@ -30,7 +32,11 @@ MAX_RADIUS = 2000.0
 CORRIDOR = 1.2  # m the path may stray from the route's line
 TIGHT_CORRIDOR = 0.3  # m, for curves tighter than the road's: they must hug its line
 CHECK_STEP = 0.5  # m between checked states
+PLANNED_KEPT = 64  # paths kept for lines asked for again
 EXTENSION = 60.0  # m of straight road added past the route's end, so that nobody runs out of path
+
+
+_PLANNED: dict[tuple[bytes, tuple[int, ...], bool], tuple[Path, int]] = {}
 
 
 @dataclass
@@ -41,15 +47,21 @@ class Path:
     states: list[tuple[float, float, float]]  # waypoint (x, y, yaw in radians, counter-clockwise from +x)
     lengths: np.ndarray  # length of the path piece after each waypoint
     spaces: list[ob.DubinsStateSpace | None]  # each piece's Dubins space (None: a chord)
+    _s: list[float] = field(init=False, repr=False)  # route_s, for bisect
+
+    def __post_init__(self) -> None:
+        self._s = self.route_s.tolist()  # a pose is asked for at every sample: plain floats are quicker
 
     def pose(self, s: float) -> tuple[float, float, float, float]:
         """(x, y, compass heading, path metres per route metre) at route arc length s."""
-        k = int(np.clip(np.searchsorted(self.route_s, s, side="right") - 1, 0, len(self.route_s) - 2))
-        span = self.route_s[k + 1] - self.route_s[k]
-        u = float(np.clip((s - self.route_s[k]) / span, 0.0, 1.0)) if span > 0 else 0.0
-        if s > self.route_s[-1]:  # past the end: straight on
+        route_s = self._s
+        # the segment holding s, and the share of it (np.searchsorted and np.clip, in plain Python)
+        k = min(max(bisect.bisect_right(route_s, s) - 1, 0), len(route_s) - 2)
+        span = route_s[k + 1] - route_s[k]
+        u = min(max((s - route_s[k]) / span, 0.0), 1.0) if span > 0 else 0.0
+        if s > route_s[-1]:  # past the end: straight on
             x, y, yaw = self.states[-1]
-            extra = s - self.route_s[-1]
+            extra = s - self.route_s[-1]  # a numpy number, as before
             return x + extra * math.cos(yaw), y + extra * math.sin(yaw), _compass(yaw), 1.0
         a, b = self.states[k], self.states[k + 1]
         scale = self.lengths[k] / span if span > 0 else 1.0
@@ -63,7 +75,20 @@ class Path:
 
 
 def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
-    """The path along `line` (extended straight past its end); also the number of chords used."""
+    """The path along `line` (extended straight past its end); also the number of chords used.
+
+    Kept for the lines last asked for, by their points: the same route on the same site comes
+    back for every staging of a scenario and for other scenarios; a Path is only read."""
+    key = (line.points.tobytes(), line.points.shape, vehicle)
+    found = _PLANNED.get(key)
+    if found is None:
+        found = _PLANNED[key] = _plan_path(line, vehicle=vehicle)
+        while len(_PLANNED) > PLANNED_KEPT:
+            del _PLANNED[next(iter(_PLANNED))]
+    return found
+
+
+def _plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     end = line.point(line.length)
     heading = line.heading(line.length)
     rad = math.radians(heading)
@@ -72,7 +97,7 @@ def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     )
     count = max(2, math.ceil(extended.length / WAYPOINT_STEP) + 1)
     at = np.linspace(0.0, extended.length, count)
-    states = [(*extended.point(s), _yaw(_tangent(extended, s))) for s in at]
+    states = _states(extended, at)
     if not vehicle:
         return Path(at, states, np.diff(at), [None] * (count - 1)), 0
     radii = extended.curvature_radius(window=2.0 * WAYPOINT_STEP)
@@ -116,7 +141,12 @@ def _radius_classes(radius: float) -> list[float]:
     The local radius is measured over a window; where the waypoints' headings ask for a
     sharper bend than it, a tighter curve still beats a chord, whose kink no car can drive.
     """
-    first = _radius_class(radius)
+    return _classes_from(_radius_class(radius))
+
+
+@functools.cache
+def _classes_from(first: float) -> list[float]:
+    """The classes tried from `first` on (a few dozen firsts exist): made once each."""
     out = [first]
     while out[-1] > MIN_RADIUS:
         out.append(_radius_class(out[-1] / RADIUS_STEP**TIGHTER_STEPS))
@@ -184,10 +214,20 @@ def _interpolate(
     return out.getX(), out.getY(), out.getYaw()
 
 
-def _tangent(line: Polyline, s: float) -> float:
-    """Compass heading of the chord over +-1 m: smoother than a single segment's."""
-    a, b = line.point(max(0.0, s - 1.0)), line.point(min(line.length, s + 1.0))
-    return compass(b[0] - a[0], b[1] - a[1])
+def _states(line: Polyline, at: np.ndarray) -> list[tuple[float, float, float]]:
+    """The waypoints at arc lengths `at` (0..length): the point, and the yaw of the chord over
+    +-1 m, smoother than a single segment's. Each is `line.point` done for all at once (np.interp
+    gives the same numbers for an array as for each of its values)."""
+    x, y = _points(line, at)
+    ax, ay = _points(line, np.maximum(at - 1.0, 0.0))
+    bx, by = _points(line, np.minimum(at + 1.0, line.length))
+    yaws = [_yaw(compass(dx, dy)) for dx, dy in zip((bx - ax).tolist(), (by - ay).tolist(), strict=True)]
+    return list(zip(x.tolist(), y.tolist(), yaws, strict=True))
+
+
+def _points(line: Polyline, at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    at = np.minimum(np.maximum(at, 0.0), line.length)
+    return np.interp(at, line.s, line.points[:, 0]), np.interp(at, line.s, line.points[:, 1])
 
 
 def _yaw(compass: float) -> float:

@@ -253,12 +253,10 @@ def lane_violation(network: Network, t: Trajectory, pose: Pose, kerb: bool = Fal
     ]
     for x, y in body_of(t, pose).corners(shrink=LINE_TOLERANCE):
         for other in beside:
-            if network.spot(other, x, y)[1] <= other.width / 2.0 and not _in_allowed(network, allowed, x, y):
+            if network.reaches(other, x, y, other.width / 2.0) and not _in_allowed(network, allowed, x, y):
                 return other.id
     return None
 
 
 def _in_allowed(network: Network, allowed: set[str], x: float, y: float) -> bool:
-    return any(
-        network.spot(lane, x, y)[1] <= lane.width / 2.0 for lane in network.near(x, y, 1.0) if lane.id in allowed
-    )
+    return any(network.reaches(lane, x, y, lane.width / 2.0) for lane in network.near(x, y, 1.0) if lane.id in allowed)

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from xml.sax.saxutils import escape
 
 HEADER = '<?xml version="1.0" encoding="UTF-8"?>\n'
 XSD_NS = 'xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"'
 
 Attrs = Sequence[tuple[str, str]]
+# saxutils.escape with the quote, in one pass (an FCD file has a few hundred thousand values)
+_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;"})
 
 
 def num(value: float, digits: int) -> str:
@@ -18,7 +19,7 @@ def num(value: float, digits: int) -> str:
 
 
 def attrs(pairs: Attrs) -> str:
-    return "".join(f' {key}="{escape(value, {chr(34): "&quot;"})}"' for key, value in pairs)
+    return "".join(f' {key}="{value.translate(_ESCAPES)}"' for key, value in pairs)
 
 
 def empty(tag: str, pairs: Attrs, indent: int) -> str:
