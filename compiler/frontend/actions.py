@@ -123,11 +123,20 @@ _INTO_LANES = re.compile(
 )
 _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 # What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
+# What was intended ends where a new clause begins: "waiting for traffic to clear and then proceeded to turn
+# left" waited, then turned. A coordinated or subordinate clause, or "and" before a verb of its own, ends it.
+_CLAUSE = (
+    r"(?=\s*(?:[.,;]|$|\b(?:then|but|when|until|while|before|after|where|as soon as)\b"
+    r"|\band (?:then |also |subsequently )?(?:(?:was|were|had|did) )?\w+ed\b))"
+)
 _INTENT = re.compile(
     r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;]*)",
+    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
+# A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
+# preparing or being about to do something says it had not begun.
+_PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
