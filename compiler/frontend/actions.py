@@ -137,7 +137,12 @@ _INTENT = re.compile(
 # A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
 # preparing or being about to do something says it had not begun.
 _PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
+_INTO_PLACE = re.compile(
+    r"\b(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,3}?(?:drive(?:way)?|lot|street|road|alley|entrance)", re.I
+)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
+# A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
+_NEGATED = re.compile(r"\b(?:not|never|n't)\b(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I)
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
 _STRAIGHT_ON = re.compile(r"^ (?:to|on) (?:go|going|continu\w*|proceed\w*|travel\w*|cross\w*)\b", re.I)
@@ -164,6 +169,7 @@ def what_was_done(text: str) -> str:
         keep = m.group("lead").lower().startswith("intend") and _STRAIGHT_ON.match(m.group("what"))
         return m.group(0) if keep else m.group("lead")
 
+    text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
     return _INTENT.sub(intent, text)
@@ -227,14 +233,59 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
     return found
 
 
+def _planned_turn(pieces: list[Piece], road: RoadKind | Unknown) -> tuple[int, ActionKind] | None:
+    """A turn the driver planned ("intending on turning left at the intersection"), with where it is said, if
+    the plan is to turn where a turn can be made: at the junction the crash is at, or into a side road or
+    driveway. One side only: two plans say nothing sure."""
+    at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
+    plans = [
+        (p.at + i.start(), m.group(1).lower())
+        for p in pieces
+        for i in _INTENT.finditer(_NEGATED.sub(" ", p.text))
+        if _PLAN.match(i.group("lead"))
+        for m in _MEANT_TURN.finditer(i.group("what"))
+        if at_junction or _INTO_PLACE.search(i.group("what"))
+    ]
+    if len({side for _, side in plans}) != 1:
+        return None
+    # "had not yet started to turn", "did not turn": the report says the turn was not made
+    if any(re.search(r"\bturn", n.group()) for p in pieces for n in _NEGATED.finditer(p.text)):
+        return None
+    return plans[0][0], ActionKind.TURN_LEFT if plans[0][1] == "left" else ActionKind.TURN_RIGHT
+
+
+def _carried_out(
+    found: list[tuple[int, Action]], plan: tuple[int, ActionKind] | None, struck_behind: bool
+) -> list[tuple[int, Action]]:
+    """A planned turn was made unless the report shows it was not (see `_planned_turn`): another move made
+    instead, a stop after the plan (it stopped short, or waited), or a crash from behind before the turn began
+    (the vehicle slowing for its turn is struck in the rear)."""
+    if plan is None or struck_behind:
+        return found
+    at, turn = plan
+    if any(a.kind in _MANOEUVRES or a.kind is ActionKind.DRIVE_INTO for _, a in found):
+        return found
+    if any(a.kind is ActionKind.STOP and where > at for where, a in found):
+        return found
+    return [*[(w, a) for w, a in found if a.kind is not ActionKind.GO_ACROSS], (at, Action(turn))]
+
+
 def read_actions(
-    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, struck_first: bool
+    pieces: list[Piece],
+    road: RoadKind | Unknown,
+    heading: Heading | Unknown,
+    struck_first: bool,
+    struck_behind: bool = False,
+    side_impact: bool = False,
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
-    `struck_first` says whether its front made the impact."""
+    `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
+    `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
+    planned turn counts as made only then: see `_carried_out`)."""
     if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
         return UNKNOWN
-    found = _found(pieces, road, heading)
+    plan = _planned_turn(pieces, road) if side_impact else None
+    found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across

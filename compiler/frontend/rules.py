@@ -335,7 +335,8 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
             if not walking and crash.victim == pid and isinstance(crash.type, Unknown):
                 crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
             continue
-        actions = read_actions(early, kind, heading, crash.striker == pid)
+        behind = crash.type is CrashType.REAR_END and crash.victim == pid
+        actions = read_actions(early, kind, heading, crash.striker == pid, behind, crash.type is CrashType.SIDE)
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
             actions = (*actions, Action(ActionKind.RETROGRADE))
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):

@@ -1,0 +1,79 @@
+"""Actions read as the language states them (issue 18): kinds of language, each with reports written here.
+
+- auxiliary verbs of starting, proceeding and attempting carry the main verb's action;
+- what was waited for or intended ends where a new clause begins, and a negated verb is no action;
+- a planned turn was made unless the report shows it was not (another move, a stop after the plan, a crash
+  from behind);
+- going the wrong way is read from who is in whose lane, not only from its usual words;
+- a lane said in words is read against the road's lanes in the vehicle's direction.
+"""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend.rules import extract
+from sovarc.dsl.ir import Unknown
+
+CROSS = "The crash occurred at a four-leg intersection. V1 was traveling south. "
+
+
+def _actions(text: str) -> dict[str, list[str]]:
+    s = extract(text, "t")
+    return {p.id: [] if isinstance(p.actions, Unknown) else [a.kind.value for a in p.actions] for p in s.participants}
+
+
+def _lanes(text: str) -> dict[str, object]:
+    return {p.id: p.lane for p in extract(text, "t").participants}
+
+
+STRUCK = " The front of V1 struck the right side of V2."
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "V2 was traveling north and proceeded to make a left turn.",
+        "V2 was traveling north and began to turn left.",
+        "V2 was traveling north. V 2 initiated a left turn in front of V1.",
+        "V2 was traveling north and attempted to turn left.",
+        "V2 was traveling north and started a left turn.",
+    ],
+)
+def test_auxiliaries_of_starting_and_attempting_carry_the_turn(said: str) -> None:
+    assert _actions(CROSS + said + STRUCK)["V2"] == ["follow_lane", "turn_left"]
+
+
+def test_a_wait_ends_where_the_next_clause_begins() -> None:
+    text = CROSS + "V2 was stopped facing north waiting for traffic to clear and then proceeded to turn left." + STRUCK
+    assert _actions(text)["V2"] == ["stop", "turn_left"]
+
+
+def test_a_negated_start_is_no_action() -> None:
+    text = (
+        CROSS + "V2 was eastbound. The driver of V2 was planning to turn right but had not yet started to turn."
+        " The front of V2 struck the right side of V1."
+    )
+    assert _actions(text)["V2"] == ["follow_lane"]
+
+
+def test_a_planned_turn_at_the_crash_junction_was_made() -> None:
+    text = (
+        CROSS + "V2 was traveling northbound intending on turning left at the intersection. The driver of V2 did"
+        " not see V1." + STRUCK
+    )
+    assert _actions(text)["V2"] == ["follow_lane", "turn_left"]
+
+
+@pytest.mark.parametrize(
+    ("said", "crash"),
+    [  # waiting says it had not begun; a stop after the plan; a crash from behind before the turn
+        ("V2 was traveling north and was waiting to turn left.", STRUCK),
+        ("V2 was traveling north intending to turn left and stopped for traffic.", STRUCK),
+        (
+            "V2 was traveling south ahead of V1, intending to turn left at the intersection.",
+            " The front of V1 struck the back of V2.",
+        ),
+    ],
+)
+def test_a_plan_not_carried_out_is_no_turn(said: str, crash: str) -> None:
+    assert "turn_left" not in _actions(CROSS + said + crash)["V2"]
