@@ -16,6 +16,7 @@ from dataclasses import replace
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash
+from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
 from sovarc.dsl.ir import (
     UNKNOWN,
@@ -317,11 +318,13 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         parts = pieces(sents, ids)
         mine = by_participant(parts, ids)
     wrong_way = precrash_wrong_way(sents)
+    clauses: dict[str, list[Piece]] = {}
     people = []
     parked: set[str] = set()
     for pid in ids:
         early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
         late = [p for p in mine[pid] if p not in early]
+        clauses[pid] = early
         heading = _heading(early)
         heading = _heading(late, after_impact=True) if isinstance(heading, Unknown) else heading
         lane = _lane_of(early, lanes)
@@ -344,6 +347,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         people.append(Participant(pid, Role.VEHICLE, heading, lane, _speed(early), actions))
     people = _shared_headings(before, people)
     people = _scene(named, people, parked)
+    people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
         name,

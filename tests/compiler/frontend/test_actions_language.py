@@ -77,3 +77,37 @@ def test_a_planned_turn_at_the_crash_junction_was_made() -> None:
 )
 def test_a_plan_not_carried_out_is_no_turn(said: str, crash: str) -> None:
     assert "turn_left" not in _actions(CROSS + said + crash)["V2"]
+
+
+ROAD = "The crash occurred on a two-lane undivided roadway with one lane in each direction. "
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "V1 was traveling east. V2 was traveling west. V1 entered oncoming traffic and the front of V1 struck the"
+        " front of V2.",
+        "V1 was traveling east. V1 partially left the right side of the roadway and overcompensated. V1 then made"
+        " contact with V2, which was traveling in the opposite direction.",
+        "V1 was traveling east. V2 was traveling west. V1 drifted across the roadway and its front struck the"
+        " front of V2.",
+    ],
+)
+def test_the_vehicle_shown_leaving_its_side_toward_an_opposed_one_is_retrograde(said: str) -> None:
+    s = extract(ROAD + said, "t")
+    got = {p.id: [a.kind.value for a in p.known_actions] for p in s.participants}
+    assert got == {"V1": ["follow_lane", "retrograde"], "V2": ["follow_lane"]}
+    assert [str(p.heading) for p in s.participants] == ["east", "west"]  # "the opposite direction" of V1
+    assert str(s.crash.type) == "frontal"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [  # nobody shown moving sideways; both shown; going the same way
+        "V1 was traveling east. V2 was traveling west. The front of V1 struck the front of V2.",
+        "V1 was traveling east and swerved. V2 was traveling west and veered. The front of V1 struck the front of V2.",
+        "V1 was traveling east and drifted. V2 was traveling east. The front of V1 struck the back of V2.",
+    ],
+)
+def test_no_wrong_way_where_the_situation_does_not_say_who(said: str) -> None:
+    assert all("retrograde" not in acts for acts in _actions(ROAD + said).values())
