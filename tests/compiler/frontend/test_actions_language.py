@@ -111,3 +111,42 @@ def test_the_vehicle_shown_leaving_its_side_toward_an_opposed_one_is_retrograde(
 )
 def test_no_wrong_way_where_the_situation_does_not_say_who(said: str) -> None:
     assert all("retrograde" not in acts for acts in _actions(ROAD + said).values())
+
+
+@pytest.mark.parametrize(
+    ("road", "said", "lanes"),
+    [
+        (
+            "The crash occurred on a six-lane roadway with three lanes in each direction. ",
+            "V1 was traveling north in the inside lane. V2 was traveling north in the curb lane ahead of V1.",
+            {"V1": 3, "V2": 1},
+        ),
+        (
+            "The crash occurred on a six-lane roadway with three lanes in each direction. ",
+            "V1 was traveling north in the middle lane. V2 was traveling north in lane three ahead of V1.",
+            {"V1": 2, "V2": 3},
+        ),
+        (
+            "The crash occurred on a three-lane one-way street. ",
+            "V1 was traveling north in the left lane. V2 was traveling north in the second lane from the left"
+            " ahead of V1.",
+            {"V1": 3, "V2": 2},
+        ),
+        (  # two-way: half the lanes are the vehicle's direction
+            "The crash occurred on a four-lane undivided roadway. ",
+            "V1 was traveling north in the left lane. V2 was traveling north in the right lane ahead of V1.",
+            {"V1": 2, "V2": 1},
+        ),
+    ],
+)
+def test_a_lane_in_words_is_read_against_the_lanes_of_its_direction(road: str, said: str, lanes: dict) -> None:
+    assert _lanes(road + said + " The front of V1 struck the back of V2.") == lanes
+
+
+def test_a_one_way_cross_street_says_nothing_of_a_vehicles_own_road() -> None:
+    text = (
+        "The crash occurred at a four-leg intersection of a four-lane two-way road and a one-way street."
+        " V1 was traveling north in the left lane. V2 was traveling west on the one-way street."
+        " The front of V2 struck the left side of V1."
+    )
+    assert _lanes(text)["V1"] == 2
