@@ -157,6 +157,7 @@ _DESCRIBED = re.compile(
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
     re.I,
 )
+_COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
@@ -317,7 +318,14 @@ def read_actions(
     moved_first = (
         bool(ordered) and ordered[0].kind is ActionKind.STOP and moving_at is not None and moving_at < found[0][0]
     )
-    if not ordered or ordered[0].kind not in _STANDING or moved_first:
+    # One first shown in the act of a manoeuvre ("V2 was a Lincoln that attempted to make a left turn"), with no
+    # motion or heading said before it, is not shown driving along its lane first.
+    heading_at = min((p.at + m.start() for p in pieces for m in _COMPASS_WORD.finditer(p.text)), default=None)
+    shown_first = [at for at in (moving_at, heading_at) if at is not None]
+    manoeuvre_first = (
+        bool(ordered) and ordered[0].kind in _MANOEUVRES and (not shown_first or min(shown_first) > found[0][0])
+    )
+    if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
     return tuple(ordered)
 

@@ -150,3 +150,13 @@ def test_a_one_way_cross_street_says_nothing_of_a_vehicles_own_road() -> None:
         " The front of V2 struck the left side of V1."
     )
     assert _lanes(text)["V1"] == 2
+
+
+def test_a_vehicle_first_shown_in_its_manoeuvre_is_not_shown_driving_first() -> None:
+    text = (
+        "The crash occurred on a two-way roadway with one lane in each direction. V1 was traveling east."
+        " V2 was a sedan that began a left turn into a driveway. The front of V1 struck the right side of V2."
+    )
+    assert _actions(text)["V2"] == ["turn_left"]
+    moving = text.replace("V2 was a sedan that began", "V2 was traveling west and began")
+    assert _actions(moving)["V2"] == ["follow_lane", "turn_left"]
