@@ -134,6 +134,13 @@ _INTENT = re.compile(
     r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
+# A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
+# to do next, not yet done: a vehicle struck from behind as it slowed had not turned.
+_PURPOSE = re.compile(
+    r"\b(?P<lead>(?:slow|brak|signal|decelerat)\w*(?: down)?(?: in order)?)"
+    r"(?P<what> to (?:turn|make|go|enter|change|merge|pull)\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
 # A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
 # preparing or being about to do something says it had not begun.
 _PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
@@ -173,6 +180,7 @@ def what_was_done(text: str) -> str:
     text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
+    text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
 
 
@@ -242,8 +250,8 @@ def _planned_turn(pieces: list[Piece], road: RoadKind | Unknown) -> tuple[int, A
     plans = [
         (p.at + i.start(), m.group(1).lower())
         for p in pieces
-        for i in _INTENT.finditer(_NEGATED.sub(" ", p.text))
-        if _PLAN.match(i.group("lead"))
+        for i in (*_INTENT.finditer(_NEGATED.sub(" ", p.text)), *_PURPOSE.finditer(p.text))
+        if _PLAN.match(i.group("lead")) or i.re is _PURPOSE
         for m in _MEANT_TURN.finditer(i.group("what"))
         if at_junction or _INTO_PLACE.search(i.group("what"))
     ]

@@ -160,3 +160,14 @@ def test_a_vehicle_first_shown_in_its_manoeuvre_is_not_shown_driving_first() -> 
     assert _actions(text)["V2"] == ["turn_left"]
     moving = text.replace("V2 was a sedan that began", "V2 was traveling west and began")
     assert _actions(moving)["V2"] == ["follow_lane", "turn_left"]
+
+
+@pytest.mark.parametrize("purpose", ["slowed to turn left into a driveway", "signaled to make a left turn into a lot"])
+def test_a_purpose_after_slowing_is_not_yet_done_when_struck_from_behind(purpose: str) -> None:
+    text = (
+        "The crash occurred on a two-way roadway with one lane in each direction. V2 was traveling south ahead of V1"
+        f" and {purpose}. The front of V1 struck the back of V2."
+    )
+    assert _actions(text)["V2"] == ["follow_lane"]
+    slowed = text.replace(purpose, "slowed to a stop")  # the stop itself stays
+    assert _actions(slowed)["V2"] == ["follow_lane", "stop"]
