@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
+from collections import Counter
 from pathlib import Path
 
 from sovarc.compiler.evaluation import coded, extraction
@@ -26,7 +28,7 @@ from sovarc.compiler.evaluation.folds import split
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import read_source
-from sovarc.dsl.ir import Scenario
+from sovarc.dsl.ir import Scenario, Unknown
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "nmvccs"
 
@@ -57,11 +59,48 @@ def _against_codes(codes: dict[str, coded.Coded], got: dict[str, Scenario | None
     return coded.CodedReport({n: coded.score(s or Scenario(n), codes[n]) for n, s in got.items()})
 
 
+def _kinds_of_misses(got: dict[str, Scenario | None], truth: dict[str, Scenario]) -> str:
+    """Per vehicle whose sequence is wrong: the action kinds it lacks and has in excess, or 'order' when the
+    kinds agree, or 'unknown' when one side does not know."""
+    tally: Counter[str] = Counter()
+    for name, want in truth.items():
+        mine = {p.id: p for p in (got[name] or Scenario(name)).participants}
+        for p in want.participants:
+            have = mine.get(p.id)
+            a = None if have is None or isinstance(have.actions, Unknown) else [x.kind.value for x in have.actions]
+            b = None if isinstance(p.actions, Unknown) else [x.kind.value for x in p.actions]
+            if a == b:
+                continue
+            if a is None or b is None:
+                tally["unknown vs known"] += 1
+                continue
+            lost, extra = Counter(b) - Counter(a), Counter(a) - Counter(b)
+            tally.update(f"missing {k}" for k in lost)
+            tally.update(f"extra {k}" for k in extra)
+            if not lost and not extra:
+                tally["order"] += 1
+    return ", ".join(f"{k} {n}" for k, n in tally.most_common()) or "none"
+
+
+def _coded_misses(report: coded.CodedReport) -> str:
+    tally: Counter[str] = Counter()
+    for _, why in report.failures("DrivingActions"):
+        for part in why.split("; "):
+            tally.update(f"needs {n}" for n in re.findall(r"needs ([\w/]+)", part))
+            tally.update(
+                f"has denied {k}"
+                for k in re.findall(r"\b(turn_left|turn_right|u_turn)\b", part.split("≠")[0])
+                if "no " in part
+            )
+    return ", ".join(f"{k} {n}" for k, n in tally.most_common()) or "none"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--llm", default="none")
     parser.add_argument("--data", type=Path, default=DATA)
     parser.add_argument("--failures", action="store_true", help="print the dev fold's failures")
+    parser.add_argument("--kinds", action="store_true", help="count the action misses by kind, every set")
     parser.add_argument("--json", type=Path, default=None, help="write the figures here too")
     args = parser.parse_args()
 
@@ -108,6 +147,17 @@ def main() -> None:
         for attribute in coded.ATTRIBUTES:
             for name, why in by_code["dev"].failures(attribute):
                 print(f"  {name:12} {attribute:18} {why}")
+    if args.kinds:
+        print("\nwhat the DrivingActions misses are, by kind (counts only: held-out reports are not shown)")
+        for k in ("dev", "held"):
+            print(f"  {k} truth: {_kinds_of_misses(got[k], {n: _truth(args.data, n) for n in got[k]})}")
+        for k in ("dev", "held", "other"):
+            print(f"  {k} coded: {_coded_misses(by_code[k])}")
+        agreed = {n for n, c in ceiling.cases.items() if (r := c.get("DrivingActions")) is not None and r[0]}
+        for k in ("dev", "held"):
+            both = coded.CodedReport({n: c for n, c in by_code[k].cases.items() if n in agreed})
+            value, n = both.accuracy("DrivingActions")
+            print(f"  {k} coded, where the ground truth meets the codes: {value:.1f} ({n}); {_coded_misses(both)}")
     if args.json:
         args.json.write_text(json.dumps(figures, indent=1) + "\n", encoding="utf-8")
 
