@@ -21,6 +21,9 @@ _TURN = (
     r"\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
     r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
+    # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
+    r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
+    r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
 )
 _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),

@@ -37,9 +37,10 @@ STRUCK = " The front of V1 struck the right side of V2."
         "V2 was traveling north. V 2 initiated a left turn in front of V1.",
         "V2 was traveling north and attempted to turn left.",
         "V2 was traveling north and started a left turn.",
+        "V2 was traveling north and went left at the intersection.",
     ],
 )
-def test_auxiliaries_of_starting_and_attempting_carry_the_turn(said: str) -> None:
+def test_auxiliaries_of_starting_and_attempting_carry_the_turn_and_a_side_taken_at_a_junction_is_one(said: str) -> None:
     assert _actions(CROSS + said + STRUCK)["V2"] == ["follow_lane", "turn_left"]
 
 
