@@ -24,7 +24,10 @@ _EACH_WAY = re.compile(
     re.I,
 )
 _ONE_WAY = re.compile(r"\bone[- ]way\b", re.I)
-_FROM = re.compile(r"\b(first|second|third|fourth|fifth) (?:travel )?lane from the (left|right)\b", re.I)
+_FROM = re.compile(
+    r"\b(first|second|third|fourth|fifth) (?:travel )?lane from the (left|right|curb|median|cent(?:er|re) ?line)\b",
+    re.I,
+)
 _LEFT = re.compile(r"\b(?:left|inside|passing|fast|median|inner) (?:\w+ )?lane\b", re.I)
 _MIDDLE = re.compile(r"\b(?:middle|center|centre) (?:travel |through )?lane\b", re.I)
 
@@ -51,7 +54,7 @@ def placed_lane(text: str, each_way: int | Unknown) -> int | Unknown:
     left), counted from the right; unknown when the words need the lane count and it is not known."""
     if m := _FROM.search(text):
         n = _ORDINAL[m.group(1).lower()]
-        if m.group(2).lower() == "right":
+        if m.group(2).lower() in ("right", "curb"):
             return n
         return each_way - n + 1 if isinstance(each_way, int) and n <= each_way else UNKNOWN
     if isinstance(each_way, Unknown):

@@ -175,11 +175,11 @@ def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unk
         r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b(?![-/])|\bnumber " + _NUMBER + r" lane", text, re.I
     ):
         return _number(m.group(1) or m.group(2))
-    if re.search(r"\blane from the (?:left|right)\b", text, re.I):  # "the second lane from the left"
+    if re.search(r"\blane from the (?:left|right|curb|median|cent)", text, re.I):  # "the second lane from the left"
         return placed_lane(text, each_way)
     if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
         return _ORDINAL[m.group(1).lower()]
-    if re.search(r"\b(?:right|curb|outside|only|slow) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.IGNORECASE):
+    if re.search(r"\b(?:right|curb|outside|outer|only|slow) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.I):
         return 1
     if not isinstance(placed := placed_lane(text, each_way), Unknown):  # left, inside, middle: see lanes.py
         return placed

@@ -133,6 +133,12 @@ def test_no_wrong_way_where_the_situation_does_not_say_who(said: str) -> None:
             " ahead of V1.",
             {"V1": 3, "V2": 2},
         ),
+        (
+            "The crash occurred on a six-lane roadway with three lanes in each direction. ",
+            "V1 was traveling north in the second lane from the curb. V2 was traveling north in the outer lane"
+            " ahead of V1.",
+            {"V1": 2, "V2": 1},
+        ),
         (  # two-way: half the lanes are the vehicle's direction
             "The crash occurred on a four-lane undivided roadway. ",
             "V1 was traveling north in the left lane. V2 was traveling north in the right lane ahead of V1.",
