@@ -87,7 +87,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bcross(?:ed|ing|es)? (?:over )?(?:the|an|this) intersection|\b(?:through|thru|across) the intersection"
             r"|\bproceed(?:ed|ing|s)? (?:through|thru|across)\b|\benter(?:ed|ing|s) the intersection\b"
             r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b"
-            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b",
+            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b"
+            r"|\b(?:through|ran|run|running|past|disregard\w*) (?:a|the) stop sign\b",  # into the junction
             re.I,
         ),
     ),
@@ -96,7 +97,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
-            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b",
+            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b"
+            # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
+            r"|\bto a (?:complete |full |sudden |quick )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
+            r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),
     ),
@@ -130,7 +134,8 @@ _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 # left" waited, then turned. A coordinated or subordinate clause, or "and" before a verb of its own, ends it.
 _CLAUSE = (
     r"(?=\s*(?:[.,;]|$|\b(?:then|but|when|until|while|before|after|where|as soon as)\b"
-    r"|\band (?:then |also |subsequently )?(?:(?:was|were|had|did) )?\w+ed\b))"
+    r"|\band (?:then |also |subsequently )?(?:(?:was|were|had|did) )?(?:\w+ed|ran|went|drove|struck|hit|began|came"
+    r"|made|took|got|left|swung|cut)\b))"
 )
 _INTENT = re.compile(
     r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
@@ -152,7 +157,10 @@ _INTO_PLACE = re.compile(
 )
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
-_NEGATED = re.compile(r"\b(?:not|never|n't)\b(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I)
+# "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
+_NEGATED = re.compile(
+    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I
+)
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
 _STRAIGHT_ON = re.compile(r"^ (?:to|on) (?:go|going|continu\w*|proceed\w*|travel\w*|cross\w*)\b", re.I)

@@ -178,3 +178,21 @@ def test_a_purpose_after_slowing_is_not_yet_done_when_struck_from_behind(purpose
     assert _actions(text)["V2"] == ["follow_lane"]
     slowed = text.replace(purpose, "slowed to a stop")  # the stop itself stays
     assert _actions(slowed)["V2"] == ["follow_lane", "stop"]
+
+
+@pytest.mark.parametrize(
+    ("said", "acts"),
+    [
+        ("went through the stop sign without stopping", ["follow_lane", "go_across"]),
+        ("failed to stop and ran the stop sign", ["follow_lane", "go_across"]),
+        ("was brought to a stop at the stop sign, then proceeded through the intersection", ["stop", "go_across"]),
+    ],
+)
+def test_failing_or_going_without_is_negation_and_a_stop_is_said_many_ways(said: str, acts: list[str]) -> None:
+    text = (
+        "The crash occurred at a four-leg intersection. V1 was traveling south and " + said + "."
+        " V2 was traveling east. The front of V1 struck the left side of V2."
+    )
+    got = _actions(text)["V1"]
+    assert got[-len(acts) :] == acts
+    assert ("stop" in got) == ("stop" in acts)
