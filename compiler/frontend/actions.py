@@ -302,6 +302,27 @@ def read_actions(
     `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
     `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
     planned turn counts as made only then: see `_carried_out`)."""
+    read = read_actions_evidence(pieces, road, heading, struck_first, struck_behind, side_impact)
+    return read if isinstance(read, Unknown) else tuple(action for action, _ in read)
+
+
+def _clause_at(pieces: list[Piece], at: int | None) -> Piece | None:
+    """The clause an action was read from: the piece holding its offset (or the last before it)."""
+    if at is None:
+        return None
+    return next((p for p in reversed(pieces) if p.at <= at), None)
+
+
+def read_actions_evidence(
+    pieces: list[Piece],
+    road: RoadKind | Unknown,
+    heading: Heading | Unknown,
+    struck_first: bool,
+    struck_behind: bool = False,
+    side_impact: bool = False,
+) -> tuple[tuple[Action, Piece | None], ...] | Unknown:
+    """`read_actions`, each action with the clause it was read from (None for the `follow_lane` a vehicle is
+    given by convention), so a reviewer can be shown why it was read."""
     if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
         return UNKNOWN
     plan = _planned_turn(pieces, road) if side_impact else None
@@ -324,13 +345,15 @@ def read_actions(
         # It stopped, then its front struck another: it moved off again, and with no turn it went across.
         found.append((found[-1][0] + 1, Action(ActionKind.GO_ACROSS)))
     ordered: list[Action] = []
-    for i, (_, action) in enumerate(found):
+    where: list[int | None] = []
+    for i, (at, action) in enumerate(found):
         later = [a for _, a in found[i + 1 :]]
         if ordered and ordered[-1] == action:
             continue
         if action.kind in (*_MANOEUVRES, ActionKind.DRIVE_INTO) and action in later:  # the plan, then the deed
             continue
         ordered.append(action)
+        where.append(at)
     # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
     # one the report shows moving before it stopped drove first.
     moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
@@ -346,7 +369,8 @@ def read_actions(
     )
     if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
-    return tuple(ordered)
+        where.insert(0, None)
+    return tuple((action, _clause_at(pieces, at)) for action, at in zip(ordered, where, strict=True))
 
 
 _PRECRASH_LEFT = re.compile(
