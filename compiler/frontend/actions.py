@@ -178,6 +178,7 @@ _DESCRIBED = re.compile(
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
+_TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
 
 
@@ -360,12 +361,13 @@ def read_actions_evidence(
     moved_first = (
         bool(ordered) and ordered[0].kind is ActionKind.STOP and moving_at is not None and moving_at < found[0][0]
     )
-    # One first shown in the act of a manoeuvre ("V2 was a Lincoln that attempted to make a left turn"), with no
-    # motion or heading said before it, is not shown driving along its lane first.
+    # One first shown in the act of a turn ("V2 was a Lincoln that attempted to make a left turn"), with no
+    # motion or heading said before it, is not shown driving along its lane first. A lane change is: it is made
+    # from a lane driven in ("changed from the right lane").
     heading_at = min((p.at + m.start() for p in pieces for m in _COMPASS_WORD.finditer(p.text)), default=None)
     shown_first = [at for at in (moving_at, heading_at) if at is not None]
     manoeuvre_first = (
-        bool(ordered) and ordered[0].kind in _MANOEUVRES and (not shown_first or min(shown_first) > found[0][0])
+        bool(ordered) and ordered[0].kind in _TURNING and (not shown_first or min(shown_first) > found[0][0])
     )
     if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
