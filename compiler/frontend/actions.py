@@ -21,6 +21,9 @@ _TURN = (
     r"\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
     r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
+    # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
+    r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
+    r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
 )
 _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
@@ -84,7 +87,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bcross(?:ed|ing|es)? (?:over )?(?:the|an|this) intersection|\b(?:through|thru|across) the intersection"
             r"|\bproceed(?:ed|ing|s)? (?:through|thru|across)\b|\benter(?:ed|ing|s) the intersection\b"
             r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b"
-            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b",
+            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b"
+            r"|\b(?:through|ran|run|running|past|disregard\w*) (?:a|the) stop sign\b",  # into the junction
             re.I,
         ),
     ),
@@ -93,7 +97,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
-            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b",
+            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b"
+            # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
+            r"|\bto a (?:complete |full |sudden |quick )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
+            r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),
     ),
@@ -123,12 +130,37 @@ _INTO_LANES = re.compile(
 )
 _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 # What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
+# What was intended ends where a new clause begins: "waiting for traffic to clear and then proceeded to turn
+# left" waited, then turned. A coordinated or subordinate clause, or "and" before a verb of its own, ends it.
+_CLAUSE = (
+    r"(?=\s*(?:[.,;]|$|\b(?:then|but|when|until|while|before|after|where|as soon as)\b"
+    r"|\band (?:then |also |subsequently )?(?:(?:was|were|had|did) )?(?:\w+ed|ran|went|drove|struck|hit|began|came"
+    r"|made|took|got|left|swung|cut)\b))"
+)
 _INTENT = re.compile(
     r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;]*)",
+    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
+# A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
+# to do next, not yet done: a vehicle struck from behind as it slowed had not turned.
+_PURPOSE = re.compile(
+    r"\b(?P<lead>(?:slow|brak|signal|decelerat)\w*(?: down)?(?: in order)?)"
+    r"(?P<what> to (?:turn|make|go|enter|change|merge|pull)\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
+# A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
+# preparing or being about to do something says it had not begun.
+_PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
+_INTO_PLACE = re.compile(
+    r"\b(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,3}?(?:drive(?:way)?|lot|street|road|alley|entrance)", re.I
+)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
+# A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
+# "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
+_NEGATED = re.compile(
+    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I
+)
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
 _STRAIGHT_ON = re.compile(r"^ (?:to|on) (?:go|going|continu\w*|proceed\w*|travel\w*|cross\w*)\b", re.I)
@@ -143,8 +175,10 @@ _DESCRIBED = re.compile(
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
     re.I,
 )
+_COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
+_TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
 
 
@@ -155,8 +189,10 @@ def what_was_done(text: str) -> str:
         keep = m.group("lead").lower().startswith("intend") and _STRAIGHT_ON.match(m.group("what"))
         return m.group(0) if keep else m.group("lead")
 
+    text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
+    text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
 
 
@@ -218,14 +254,80 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
     return found
 
 
+def _planned_turn(pieces: list[Piece], road: RoadKind | Unknown) -> tuple[int, ActionKind] | None:
+    """A turn the driver planned ("intending on turning left at the intersection"), with where it is said, if
+    the plan is to turn where a turn can be made: at the junction the crash is at, or into a side road or
+    driveway. One side only: two plans say nothing sure."""
+    at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
+    plans = [
+        (p.at + i.start(), m.group(1).lower())
+        for p in pieces
+        for i in (*_INTENT.finditer(_NEGATED.sub(" ", p.text)), *_PURPOSE.finditer(p.text))
+        if _PLAN.match(i.group("lead")) or i.re is _PURPOSE
+        for m in _MEANT_TURN.finditer(i.group("what"))
+        if at_junction or _INTO_PLACE.search(i.group("what"))
+    ]
+    if len({side for _, side in plans}) != 1:
+        return None
+    # "had not yet started to turn", "did not turn": the report says the turn was not made
+    if any(re.search(r"\bturn", n.group()) for p in pieces for n in _NEGATED.finditer(p.text)):
+        return None
+    return plans[0][0], ActionKind.TURN_LEFT if plans[0][1] == "left" else ActionKind.TURN_RIGHT
+
+
+def _carried_out(
+    found: list[tuple[int, Action]], plan: tuple[int, ActionKind] | None, struck_behind: bool
+) -> list[tuple[int, Action]]:
+    """A planned turn was made unless the report shows it was not (see `_planned_turn`): another move made
+    instead, a stop after the plan (it stopped short, or waited), or a crash from behind before the turn began
+    (the vehicle slowing for its turn is struck in the rear)."""
+    if plan is None or struck_behind:
+        return found
+    at, turn = plan
+    if any(a.kind in _MANOEUVRES or a.kind is ActionKind.DRIVE_INTO for _, a in found):
+        return found
+    if any(a.kind is ActionKind.STOP and where > at for where, a in found):
+        return found
+    return [*[(w, a) for w, a in found if a.kind is not ActionKind.GO_ACROSS], (at, Action(turn))]
+
+
 def read_actions(
-    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, struck_first: bool
+    pieces: list[Piece],
+    road: RoadKind | Unknown,
+    heading: Heading | Unknown,
+    struck_first: bool,
+    struck_behind: bool = False,
+    side_impact: bool = False,
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
-    `struck_first` says whether its front made the impact."""
+    `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
+    `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
+    planned turn counts as made only then: see `_carried_out`)."""
+    read = read_actions_evidence(pieces, road, heading, struck_first, struck_behind, side_impact)
+    return read if isinstance(read, Unknown) else tuple(action for action, _ in read)
+
+
+def _clause_at(pieces: list[Piece], at: int | None) -> Piece | None:
+    """The clause an action was read from: the piece holding its offset (or the last before it)."""
+    if at is None:
+        return None
+    return next((p for p in reversed(pieces) if p.at <= at), None)
+
+
+def read_actions_evidence(
+    pieces: list[Piece],
+    road: RoadKind | Unknown,
+    heading: Heading | Unknown,
+    struck_first: bool,
+    struck_behind: bool = False,
+    side_impact: bool = False,
+) -> tuple[tuple[Action, Piece | None], ...] | Unknown:
+    """`read_actions`, each action with the clause it was read from (None for the `follow_lane` a vehicle is
+    given by convention), so a reviewer can be shown why it was read."""
     if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
         return UNKNOWN
-    found = _found(pieces, road, heading)
+    plan = _planned_turn(pieces, road) if side_impact else None
+    found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
@@ -244,22 +346,33 @@ def read_actions(
         # It stopped, then its front struck another: it moved off again, and with no turn it went across.
         found.append((found[-1][0] + 1, Action(ActionKind.GO_ACROSS)))
     ordered: list[Action] = []
-    for i, (_, action) in enumerate(found):
+    where: list[int | None] = []
+    for i, (at, action) in enumerate(found):
         later = [a for _, a in found[i + 1 :]]
         if ordered and ordered[-1] == action:
             continue
         if action.kind in (*_MANOEUVRES, ActionKind.DRIVE_INTO) and action in later:  # the plan, then the deed
             continue
         ordered.append(action)
+        where.append(at)
     # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
     # one the report shows moving before it stopped drove first.
     moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
     moved_first = (
         bool(ordered) and ordered[0].kind is ActionKind.STOP and moving_at is not None and moving_at < found[0][0]
     )
-    if not ordered or ordered[0].kind not in _STANDING or moved_first:
+    # One first shown in the act of a turn ("V2 was a Lincoln that attempted to make a left turn"), with no
+    # motion or heading said before it, is not shown driving along its lane first. A lane change is: it is made
+    # from a lane driven in ("changed from the right lane").
+    heading_at = min((p.at + m.start() for p in pieces for m in _COMPASS_WORD.finditer(p.text)), default=None)
+    shown_first = [at for at in (moving_at, heading_at) if at is not None]
+    manoeuvre_first = (
+        bool(ordered) and ordered[0].kind in _TURNING and (not shown_first or min(shown_first) > found[0][0])
+    )
+    if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
-    return tuple(ordered)
+        where.insert(0, None)
+    return tuple((action, _clause_at(pieces, at)) for action, at in zip(ordered, where, strict=True))
 
 
 _PRECRASH_LEFT = re.compile(

@@ -16,6 +16,8 @@ from dataclasses import replace
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash
+from sovarc.compiler.frontend.lanes import per_direction, placed_lane
+from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
 from sovarc.dsl.ir import (
     UNKNOWN,
@@ -168,17 +170,19 @@ def _heading(pieces: list[Piece], after_impact: bool = False) -> Heading | Unkno
     return UNKNOWN
 
 
-def _lane(text: str, lanes: int | Unknown) -> int | Unknown:
+def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unknown:
     if m := re.search(
         r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b(?![-/])|\bnumber " + _NUMBER + r" lane", text, re.I
     ):
         return _number(m.group(1) or m.group(2))
+    if re.search(r"\blane from the (?:left|right|curb|median|cent)", text, re.I):  # "the second lane from the left"
+        return placed_lane(text, each_way)
     if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
         return _ORDINAL[m.group(1).lower()]
-    if re.search(r"\b(?:right|curb|outside|only) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.IGNORECASE):
+    if re.search(r"\b(?:right|curb|outside|outer|only|slow) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.I):
         return 1
-    if re.search(r"\b(?:left|inside|passing) (?:\w+ )?lane\b", text, re.IGNORECASE) and isinstance(lanes, int):
-        return max(1, lanes // 2)
+    if not isinstance(placed := placed_lane(text, each_way), Unknown):  # left, inside, middle: see lanes.py
+        return placed
     if lanes == 2 and re.search(r"\b(?:in|within) the (?:north|south|east|west)bound (?:travel )?lane\b", text, re.I):
         return 1  # a road with one lane each way
     if _ONE_LANE_ROAD.search(text):  # its own road has one lane its way, whatever the widest road has
@@ -194,12 +198,12 @@ _ONE_LANE_ROAD = re.compile(
 )
 
 
-def _lane_of(pieces: list[Piece], lanes: int | Unknown) -> int | Unknown:
+def _lane_of(pieces: list[Piece], lanes: int | Unknown, each_way: int | Unknown) -> int | Unknown:
     """The lane a vehicle started in: not one it turned into, nor one it came to rest in after the impact."""
     for piece in pieces:
         text = re.sub(r"\b(?:turn|turned|turning) (?:\w+ ){0,3}into (?:the )?[^.,;]*", " ", piece.text)
         text = re.sub(r"[^.,;]*\b(?:rest|pushed|spun|rotated)\b[^.,;]*", " ", text)
-        if not isinstance(lane := _lane(text, lanes), Unknown):
+        if not isinstance(lane := _lane(text, lanes, each_way), Unknown):
             return lane
     return UNKNOWN
 
@@ -317,15 +321,18 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         parts = pieces(sents, ids)
         mine = by_participant(parts, ids)
     wrong_way = precrash_wrong_way(sents)
+    clauses: dict[str, list[Piece]] = {}
     people = []
     parked: set[str] = set()
     for pid in ids:
         early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
         late = [p for p in mine[pid] if p not in early]
+        clauses[pid] = early
         heading = _heading(early)
         heading = _heading(late, after_impact=True) if isinstance(heading, Unknown) else heading
-        lane = _lane_of(early, lanes)
-        lane = _lane_of(late, lanes) if isinstance(lane, Unknown) else lane
+        each_way = per_direction(" ".join(p.text for p in early), named, lanes, kind is RoadKind.STRAIGHT)
+        lane = _lane_of(early, lanes, each_way)
+        lane = _lane_of(late, lanes, each_way) if isinstance(lane, Unknown) else lane
         if any(_PARKED.search(p.text) for p in early):
             parked.add(pid)
         if pid.startswith("P"):
@@ -335,7 +342,8 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
             if not walking and crash.victim == pid and isinstance(crash.type, Unknown):
                 crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
             continue
-        actions = read_actions(early, kind, heading, crash.striker == pid)
+        behind = crash.type is CrashType.REAR_END and crash.victim == pid
+        actions = read_actions(early, kind, heading, crash.striker == pid, behind, crash.type is CrashType.SIDE)
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
             actions = (*actions, Action(ActionKind.RETROGRADE))
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
@@ -343,6 +351,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         people.append(Participant(pid, Role.VEHICLE, heading, lane, _speed(early), actions))
     people = _shared_headings(before, people)
     people = _scene(named, people, parked)
+    people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
     return Scenario(
         name,
