@@ -192,7 +192,9 @@ class Reader(StrEnum):
     DEFAULT = "default"
 
 
-FACT_PATH = re.compile(r"(?P<head>[A-Za-z_][A-Za-z0-9_\-]*)\.(?P<field>[A-Za-z_][A-Za-z0-9_]*)(?:\[(?P<index>[0-9]+)\])?")
+FACT_PATH = re.compile(
+    r"(?P<head>[A-Za-z_][A-Za-z0-9_\-]*)\.(?P<field>[A-Za-z_][A-Za-z0-9_]*)(?:\[(?P<index>[0-9]+)\])?"
+)
 _SECTIONS = {"environment": 0, "road": 1, "crash": 3}
 
 
