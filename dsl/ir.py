@@ -196,19 +196,30 @@ FACT_PATH = re.compile(
     r"(?P<head>[A-Za-z_][A-Za-z0-9_\-]*)\.(?P<field>[A-Za-z_][A-Za-z0-9_]*)(?:\[(?P<index>[0-9]+)\])?"
 )
 _SECTIONS = {"environment": 0, "road": 1, "crash": 3}
+# Fields in the order the printer writes them (the node definitions below, kept in step by a test).
+FIELD_ORDER = {
+    f: i
+    for fields in (
+        ("weather", "lighting"),
+        ("kind", "lanes", "speed_limit"),
+        ("role", "heading", "lane", "speed", "actions"),
+        ("type", "striker", "victim"),
+    )
+    for i, f in enumerate(fields)
+}
 
 
-def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, int | str, str, int]:
+def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, int | str, int, str, int]:
     """Where a fact's path sorts: the sections in printed order, participants by `order` (else by name), then
     the field, then the action's number. A path of no known form sorts last, by its text."""
     m = FACT_PATH.fullmatch(path)
     if m is None:
-        return (4, path, "", 0)
-    head, index = m["head"], int(m["index"] or 0)
+        return (4, path, 0, "", 0)
+    head, index, rank = m["head"], int(m["index"] or 0), FIELD_ORDER.get(m["field"], len(FIELD_ORDER))
     if head in _SECTIONS:
-        return (_SECTIONS[head], "", m["field"], index)
+        return (_SECTIONS[head], "", rank, m["field"], index)
     who: int | str = order.get(head, len(order)) if order is not None else head
-    return (2, who, m["field"], index)
+    return (2, who, rank, m["field"], index)
 
 
 @dataclass(frozen=True)

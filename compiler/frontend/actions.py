@@ -223,8 +223,15 @@ def read_actions(
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
     `struck_first` says whether its front made the impact."""
+    return read_actions_at(pieces, road, heading, struck_first)[0]
+
+
+def read_actions_at(
+    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, struck_first: bool
+) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
+    """`read_actions`, and where each action was read (an offset into the pieces' joined sentences)."""
     if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
-        return UNKNOWN
+        return UNKNOWN, ()
     found = _found(pieces, road, heading)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
@@ -244,13 +251,15 @@ def read_actions(
         # It stopped, then its front struck another: it moved off again, and with no turn it went across.
         found.append((found[-1][0] + 1, Action(ActionKind.GO_ACROSS)))
     ordered: list[Action] = []
-    for i, (_, action) in enumerate(found):
+    where: list[int] = []
+    for i, (at, action) in enumerate(found):
         later = [a for _, a in found[i + 1 :]]
         if ordered and ordered[-1] == action:
             continue
         if action.kind in (*_MANOEUVRES, ActionKind.DRIVE_INTO) and action in later:  # the plan, then the deed
             continue
         ordered.append(action)
+        where.append(at)
     # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
     # one the report shows moving before it stopped drove first.
     moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
@@ -259,7 +268,10 @@ def read_actions(
     )
     if not ordered or ordered[0].kind not in _STANDING or moved_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
-    return tuple(ordered)
+        # read where it was shown moving, else where it was first described
+        described = next(p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text)))
+        where.insert(0, moving_at if moving_at is not None else described)
+    return tuple(ordered), tuple(where)
 
 
 _PRECRASH_LEFT = re.compile(
@@ -269,7 +281,7 @@ _PRECRASH_LEFT = re.compile(
 )
 
 
-def precrash_wrong_way(sents: list[str]) -> set[str]:
+def precrash_wrong_way(sents: list[str]) -> dict[str, int]:
     """Vehicles whose coded pre-crash event ("travelling over the lane line on the left side"), often written
-    after the impact, says they went into the opposing lane."""
-    return {m.group(1) for s in sents if (m := _PRECRASH_LEFT.search(s))}
+    after the impact, says they went into the opposing lane; each with the index of the sentence that says so."""
+    return {m.group(1): i for i, s in enumerate(sents) if (m := _PRECRASH_LEFT.search(s))}
