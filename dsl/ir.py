@@ -224,8 +224,9 @@ def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, in
 
 @dataclass(frozen=True)
 class Evidence:
-    """Why a fact was read: characters `start`..`end` (from 0, end exclusive) of the report, the text there,
-    and the reader that read it. `fact` is the fact's path: `environment.weather`, `V2.actions[1]`."""
+    """Why a fact was read: the report's characters start..end (from 0, end exclusive), quoted.
+
+    `fact` is the fact's path (`environment.weather`, `V2.actions[1]`), `reader` what read it there."""
 
     fact: str
     reader: Reader
