@@ -6,7 +6,7 @@ import difflib
 from dataclasses import dataclass, fields
 from typing import Any
 
-from sovarc.dsl.ir import Participant, Scenario, Unknown
+from sovarc.dsl.ir import Participant, Provenance, Scenario, Unknown, fact_key
 from sovarc.dsl.printer import format_action, format_speed, format_words
 
 
@@ -80,8 +80,32 @@ def _actions(p: Participant, q: Participant) -> list[Change]:
     return out
 
 
-def diff(a: Scenario, b: Scenario) -> list[Change]:
-    """The changes that turn `a` into `b`, in the printer's order of facts."""
+def _evidence(pa: Provenance, pb: Provenance) -> list[Change]:
+    """Evidence that changed, one change per fact: the spans each reader gave it, before and after."""
+
+    def shown(p: Provenance) -> dict[str, str]:
+        out: dict[str, list[str]] = {}
+        for e in p.evidence:
+            out.setdefault(e.fact, []).append(f'{e.reader} {e.start}..{e.end} "{e.quote}"')
+        return {fact: "; ".join(spans) for fact, spans in out.items()}
+
+    old, new = shown(pa), shown(pb)
+    facts = sorted(set(old) | set(new), key=fact_key)
+    return [
+        Change(
+            f"evidence.{fact}",
+            old.get(fact),
+            new.get(fact),
+            f"evidence of {fact}: {old.get(fact, 'none')} → {new.get(fact, 'none')}",
+        )
+        for fact in facts
+        if old.get(fact) != new.get(fact)
+    ]
+
+
+def diff(a: Scenario, b: Scenario, evidence: bool = False) -> list[Change]:
+    """The changes that turn `a` into `b`, in the printer's order of facts. Evidence (why a fact was read) is
+    not a fact: its changes are listed only when `evidence` is true."""
     out: list[Change] = []
     if a.name != b.name:
         out.append(_changed("name", "name", a.name, b.name))
@@ -97,7 +121,9 @@ def diff(a: Scenario, b: Scenario) -> list[Change]:
                 )
             )
         else:
-            out += _node_fields("provenance", pa, pb)
+            out += _node_fields("provenance", pa, pb, skip=frozenset({"evidence"}))
+            if evidence:
+                out += _evidence(pa, pb)
     out += _node_fields("environment", a.environment, b.environment)
     out += _node_fields("road", a.road, b.road)
     old_ids = [p.id for p in a.participants]

@@ -7,6 +7,7 @@ two scenarios are equal exactly when they state the same facts.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import Enum, StrEnum
@@ -183,6 +184,61 @@ class Speed:
         return self.value / 3.6 if self.unit is SpeedUnit.KMH else self.value * 0.44704
 
 
+class Reader(StrEnum):
+    """Which reader of the front end read a fact."""
+
+    RULES = "rules"
+    MODEL = "model"
+    DEFAULT = "default"
+
+
+FACT_PATH = re.compile(
+    r"(?P<head>[A-Za-z_][A-Za-z0-9_\-]*)\.(?P<field>[A-Za-z_][A-Za-z0-9_]*)(?:\[(?P<index>[0-9]+)\])?"
+)
+_SECTIONS = {"environment": 0, "road": 1, "crash": 3}
+# Fields in the order the printer writes them (the node definitions below, kept in step by a test).
+FIELD_ORDER = {
+    f: i
+    for fields in (
+        ("weather", "lighting"),
+        ("kind", "lanes", "speed_limit"),
+        ("role", "heading", "lane", "speed", "actions"),
+        ("type", "striker", "victim"),
+    )
+    for i, f in enumerate(fields)
+}
+
+
+def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, int | str, int, str, int]:
+    """Where a fact's path sorts: the sections in printed order, participants by `order` (else by name), then
+    the field, then the action's number. A path of no known form sorts last, by its text."""
+    m = FACT_PATH.fullmatch(path)
+    if m is None:
+        return (4, path, 0, "", 0)
+    head, index, rank = m["head"], int(m["index"] or 0), FIELD_ORDER.get(m["field"], len(FIELD_ORDER))
+    if head in _SECTIONS:
+        return (_SECTIONS[head], "", rank, m["field"], index)
+    who: int | str = order.get(head, len(order)) if order is not None else head
+    return (2, who, rank, m["field"], index)
+
+
+@dataclass(frozen=True)
+class Evidence:
+    """Why a fact was read: the report's characters start..end (from 0, end exclusive), quoted.
+
+    `fact` is the fact's path (`environment.weather`, `V2.actions[1]`), `reader` what read it there."""
+
+    fact: str
+    reader: Reader
+    start: int
+    end: int
+    quote: str
+    meta: Meta = META
+
+    def sort_key(self, order: Mapping[str, int] | None = None) -> tuple[object, ...]:
+        return (fact_key(self.fact, order), self.start, self.end, self.reader.value, self.quote)
+
+
 @dataclass(frozen=True)
 class Provenance:
     report: str | Unknown = UNKNOWN
@@ -190,10 +246,16 @@ class Provenance:
     frontend: str | Unknown = UNKNOWN
     model: str | Unknown = UNKNOWN
     assumed: tuple[str, ...] = ()  # dotted paths of facts filled in by the defaults pass
+    evidence: tuple[Evidence, ...] = ()  # where in the report each fact was read
     meta: Meta = META
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "assumed", _as_set(self.assumed))
+        # A set of statements, kept in one order so that equality ignores the order they were made in.
+        object.__setattr__(self, "evidence", tuple(sorted(set(self.evidence), key=Evidence.sort_key)))
+
+    def evidence_for(self, fact: str) -> tuple[Evidence, ...]:
+        return tuple(e for e in self.evidence if e.fact == fact)
 
 
 @dataclass(frozen=True)

@@ -28,11 +28,13 @@ from sovarc.dsl.ir import (
     Crash,
     CrashType,
     Environment,
+    Evidence,
     Heading,
     Lighting,
     Meta,
     Participant,
     Provenance,
+    Reader,
     Road,
     RoadKind,
     Role,
@@ -53,6 +55,7 @@ _TERMINAL_WORDS = {
     "NUMBER": "a number",
     "STRING": "a quoted string",
     "PATH": "a dotted path like V1.lane",
+    "CHARS": "a character span like 120..131",
     "LBRACE": "'{'",
     "RBRACE": "'}'",
     "LPAR": "'('",
@@ -273,6 +276,21 @@ class _Builder(Transformer[Token, Any]):
 
     def assumed(self, meta: Any, c: list[Token]) -> _Field:
         return self._field("assumed", meta, tuple(str(t) for t in c[1:]))
+
+    def evidence_item(self, meta: Any, c: list[Token]) -> Evidence | None:
+        path, reader, chars, quote = c
+        kind = self._enum(Reader, reader, "reader", unknown_ok=False)
+        start, end = (int(n) for n in str(chars).split(".."))
+        if end < start:
+            self._error(f"the span {chars} ends before it starts", self._tok_span(chars))
+            return None
+        text = self._text(quote)
+        if isinstance(kind, Unknown) or isinstance(text, Unknown):
+            return None
+        return Evidence(str(path), kind, start, end, text, meta=Meta(self._span(meta)))
+
+    def evidence(self, meta: Any, c: list[Any]) -> _Field:
+        return self._field("evidence", meta, tuple(e for e in c[1:] if e is not None))
 
     def provenance(self, meta: Any, c: list[Any]) -> Provenance:
         return self._block(Provenance, meta, c)

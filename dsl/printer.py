@@ -14,6 +14,7 @@ from sovarc.dsl.ir import (
     Action,
     Crash,
     Environment,
+    Evidence,
     Participant,
     Provenance,
     Road,
@@ -82,7 +83,11 @@ def _block(w: _Writer, depth: int, header: str, node: object, rows: list[tuple[s
     w.close(depth, comments.get(""), comments.get("}"))
 
 
-def _provenance(w: _Writer, p: Provenance) -> None:
+def format_evidence(e: Evidence) -> str:
+    return f"{e.fact} {e.reader} {e.start}..{e.end} {_text(e.quote)}"
+
+
+def _provenance(w: _Writer, p: Provenance, order: dict[str, int]) -> None:
     rows = [
         ("report", _text(p.report)),
         ("sha256", _text(p.sha256)),
@@ -91,7 +96,16 @@ def _provenance(w: _Writer, p: Provenance) -> None:
     ]
     if p.assumed:
         rows.append(("assumed", ", ".join(p.assumed)))
-    _block(w, 1, "provenance", p, rows)
+    comments = p.meta.comments
+    w.line(1, "provenance {", comments.get(""))
+    for key, text, trivia in _fields(p, rows):
+        w.line(2, f"{key} {text}", trivia)
+    if p.evidence:  # in the order the facts are printed, so that a fact's evidence is one line of a diff
+        w.line(2, "evidence {", comments.get("evidence"))
+        for e in sorted(p.evidence, key=lambda e: e.sort_key(order)):
+            w.line(3, format_evidence(e), e.meta.comments.get(""))
+        w.close(2, comments.get("evidence"), comments.get("evidence}"))
+    w.close(1, comments.get(""), comments.get("}"))
 
 
 def _bare(value: str | Unknown) -> str:
@@ -143,7 +157,8 @@ def to_text(scenario: Scenario) -> str:
     comments = scenario.meta.comments
     w.line(0, f"scenario {scenario.name} {{", comments.get(""))
     if scenario.provenance is not None:
-        _provenance(w, scenario.provenance)
+        order = {p.id: i for i, p in enumerate(scenario.participants)}
+        _provenance(w, scenario.provenance, order)
     _environment(w, scenario.environment)
     _road(w, scenario.road)
     for participant in scenario.participants:

@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import fields
 
 from sovarc.dsl.errors import Diagnostic, Severity, VerifyError
-from sovarc.dsl.ir import ACTION_SPECS, ActionKind, Scenario, Side, Unknown
+from sovarc.dsl.ir import ACTION_SPECS, FACT_PATH, ActionKind, Scenario, Side, Unknown
 from sovarc.dsl.parser import is_plain_name
 
 Rule = Callable[[Scenario], Iterator[Diagnostic]]
@@ -138,6 +138,30 @@ def _assumed_paths(s: Scenario) -> Iterator[Diagnostic]:
             yield Diagnostic(f"assumed fact '{path}' names no field of this scenario", p.meta.where("assumed"))
 
 
+def _evidence_paths(s: Scenario) -> Iterator[Diagnostic]:
+    """Evidence names a fact the scenario has (an action by its number, from 1), and quotes as many characters
+    as its span holds."""
+    p = s.provenance
+    if p is None:
+        return
+    nodes = {"road": s.road, "environment": s.environment, "crash": s.crash}
+    nodes.update({q.id: q for q in s.participants})
+    for e in p.evidence:
+        m = FACT_PATH.fullmatch(e.fact)
+        node = nodes.get(m["head"]) if m else None
+        where = e.meta.span or p.meta.where("evidence")
+        if m is None or node is None or m["field"] not in {f.name for f in fields(node)} - {"meta", "id"}:
+            yield Diagnostic(f"evidence for '{e.fact}' names no fact of this scenario", where)
+        elif m["index"] is not None and (
+            m["field"] != "actions" or not 1 <= int(m["index"]) <= len(node.known_actions)  # type: ignore[attr-defined]
+        ):
+            yield Diagnostic(f"evidence for '{e.fact}' names no action of {m['head']}", where)
+        if e.end - e.start != len(e.quote):
+            yield Diagnostic(
+                f"evidence for '{e.fact}' spans {e.end - e.start} characters but quotes {len(e.quote)}", where
+            )
+
+
 RULES: tuple[Rule, ...] = (
     _has_participants,
     _names_writable,
@@ -148,6 +172,7 @@ RULES: tuple[Rule, ...] = (
     _actions_fit,
     _sha256_form,
     _assumed_paths,
+    _evidence_paths,
 )
 
 

@@ -1,4 +1,4 @@
-"""The commands that work on scenario files: check, fmt, diff, convert, schema, import-truth, extract."""
+"""The commands that work on scenario files: check, fmt, diff, explain, convert, schema, import-truth, extract."""
 
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.scenario_io import dump_scenario, load_scenario
 from sovarc.dsl import Severity, SovarcError, diff, json_schema, read_source, to_text, verify, verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
+from sovarc.dsl.explain import explain
 from tqdm import tqdm
 
 
@@ -73,7 +74,7 @@ def cmd_diff(args: argparse.Namespace) -> int:
             reporter.error(exc, source_of(name))
     if reporter.failed:
         return EXIT_INPUT
-    changes = diff(loaded[0], loaded[1])
+    changes = diff(loaded[0], loaded[1], evidence=args.evidence)
     if args.json:
         print(json.dumps([c.to_json() for c in changes], indent=2, ensure_ascii=False))
     elif changes:
@@ -97,6 +98,31 @@ def cmd_convert(args: argparse.Namespace) -> int:
         write_atomic(args.output, text)
     else:
         print(text, end="")
+    return EXIT_OK
+
+
+def cmd_explain(args: argparse.Namespace) -> int:
+    reporter = Reporter()
+    try:
+        scenario, source = load_scenario(args.file)
+    except SovarcError as exc:
+        reporter.error(exc, source_of(args.file))
+        return EXIT_INPUT
+    report = None
+    p = scenario.provenance
+    if args.report:
+        report = read_source(args.report, "crash report")
+    elif p is not None and isinstance(p.report, str):
+        # The report as the provenance names it: from here, else beside the scenario file.
+        for candidate in (Path(p.report), Path(source.name).parent / p.report):
+            if candidate.is_file():
+                report = read_source(candidate, "crash report")
+                break
+    try:
+        print(explain(scenario, report), end="")
+    except SovarcError as exc:
+        reporter.error(exc, source)
+        return EXIT_INPUT
     return EXIT_OK
 
 

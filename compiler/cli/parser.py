@@ -40,6 +40,7 @@ Tools for the scenario IR:
   sovarc check examples/scenarios/*.sov     report every error and warning, compiler style
   sovarc fmt --check examples/scenarios/*.sov
   sovarc diff old.sov new.sov               what changed, by meaning
+  sovarc explain FILE.sov                   each fact beside the report's words it was read from
   sovarc convert FILE.sov -o FILE.json      the JSON form, and back
   sovarc schema                             the JSON Schema of the JSON form
 
@@ -52,6 +53,7 @@ COMMANDS: dict[str, str] = {
     "check": "parse and verify scenarios; print every error and warning",
     "fmt": "rewrite scenarios in canonical form",
     "diff": "print what changed between two scenarios, by meaning",
+    "explain": "show each fact of a scenario with the words of the report it was read from",
     "convert": "convert a scenario between .sov text and its JSON form",
     "schema": "print the JSON Schema of the scenario IR's JSON form",
     "import-truth": "convert SoVAR-style ground-truth JSON into .sov scenarios",
@@ -61,6 +63,27 @@ COMMANDS: dict[str, str] = {
     "sites": "list (and draw) the sites a map offers, per road kind",
     "batch": "compile many reports or scenarios on several maps, in parallel, resumable",
 }
+
+
+EXPLAIN_DESCRIPTION = """\
+Show why each fact of a scenario was read. The front end records, for every fact it
+reads, the characters of the report it read it from (the `evidence` block of the
+scenario's provenance). explain prints the facts layer by layer (environment, road,
+each participant, the crash), each with the reader that read it (rules or model) and
+the report's line with a caret under the words, as the compiler shows an error.
+A fact with no evidence says why: "assumed" (filled in by the defaults pass, listed
+under provenance.assumed), "not stated" (unknown: the report does not say), or
+"no evidence" (known, but no reader recorded where: a hand-written scenario, say).
+
+The report must be the one the scenario was read from: explain refuses a report
+whose sha256 differs from the provenance's, and one whose text at a span is not the
+quoted text. Without the report, the quotes are shown alone.
+
+examples:
+  sovarc extract examples/reports/evidence_left_turn_signal.txt -o out/
+  sovarc explain out/evidence_left_turn_signal.sov
+  sovarc explain scenario.sov --report ../reports/30.txt
+  sovarc diff --evidence old.sov new.sov      what changed in the evidence too"""
 
 
 TESTS_DESCRIPTION = """\
@@ -171,6 +194,22 @@ def build_parser() -> argparse.ArgumentParser:
     dif.add_argument("new", metavar="NEW")
     dif.add_argument("--json", action="store_true", help="print the changes as JSON")
     dif.add_argument("--exit-code", action="store_true", help="exit 1 when the scenarios differ")
+    dif.add_argument(
+        "--evidence", action="store_true", help="also list changed evidence (why a fact was read), which is no fact"
+    )
+
+    exp = sub.add_parser(
+        "explain",
+        help=COMMANDS["explain"],
+        formatter_class=_formatter,
+        description=EXPLAIN_DESCRIPTION,
+    )
+    exp.add_argument("file", metavar="FILE.sov", help="a scenario (.sov or .json), usually written by `sovarc extract`")
+    exp.add_argument(
+        "--report",
+        metavar="REPORT.txt",
+        help="the crash report it was read from (default: the report its provenance names, if that file exists)",
+    )
 
     conv = sub.add_parser(
         "convert",

@@ -26,6 +26,7 @@ from sovarc.compiler.frontend.choice import (
     model_extra_installed,
 )
 from sovarc.compiler.frontend.defaults import apply_defaults
+from sovarc.compiler.frontend.evidence import EvidenceError, check_evidence
 from sovarc.compiler.frontend.hybrid import model_reading
 from sovarc.compiler.frontend.names import partner_refusal
 from sovarc.compiler.frontend.providers import make_provider
@@ -104,8 +105,13 @@ class FrontEnd:
             provider = self.provider()
             scenario, found = model_reading(rules, source.text, provider)
             notes += found
-            scenario = replace(scenario, provenance=_provenance(source, self.llm, provider.model))
-        return Extraction(apply_defaults(scenario), tuple(notes))
+            evidence = scenario.provenance.evidence if scenario.provenance else ()
+            provenance = replace(_provenance(source, self.llm, provider.model), evidence=evidence)
+            scenario = replace(scenario, provenance=provenance)
+        scenario = apply_defaults(scenario)
+        if problems := check_evidence(source.text, scenario.provenance.evidence if scenario.provenance else ()):
+            raise EvidenceError(f"{source.name}: evidence not in the report: " + "; ".join(problems))
+        return Extraction(scenario, tuple(notes))
 
     def close(self) -> None:
         close = getattr(self._provider, "close", None)

@@ -303,29 +303,21 @@ def read_actions(
     `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
     `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
     planned turn counts as made only then: see `_carried_out`)."""
-    read = read_actions_evidence(pieces, road, heading, struck_first, struck_behind, side_impact)
-    return read if isinstance(read, Unknown) else tuple(action for action, _ in read)
+    return read_actions_at(pieces, road, heading, struck_first, struck_behind, side_impact)[0]
 
 
-def _clause_at(pieces: list[Piece], at: int | None) -> Piece | None:
-    """The clause an action was read from: the piece holding its offset (or the last before it)."""
-    if at is None:
-        return None
-    return next((p for p in reversed(pieces) if p.at <= at), None)
-
-
-def read_actions_evidence(
+def read_actions_at(
     pieces: list[Piece],
     road: RoadKind | Unknown,
     heading: Heading | Unknown,
     struck_first: bool,
     struck_behind: bool = False,
     side_impact: bool = False,
-) -> tuple[tuple[Action, Piece | None], ...] | Unknown:
-    """`read_actions`, each action with the clause it was read from (None for the `follow_lane` a vehicle is
-    given by convention), so a reviewer can be shown why it was read."""
+) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
+    """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
+    reviewer can be shown why it was read."""
     if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
-        return UNKNOWN
+        return UNKNOWN, ()
     plan = _planned_turn(pieces, road) if side_impact else None
     found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
     kinds = {a.kind for _, a in found}
@@ -346,7 +338,7 @@ def read_actions_evidence(
         # It stopped, then its front struck another: it moved off again, and with no turn it went across.
         found.append((found[-1][0] + 1, Action(ActionKind.GO_ACROSS)))
     ordered: list[Action] = []
-    where: list[int | None] = []
+    where: list[int] = []
     for i, (at, action) in enumerate(found):
         later = [a for _, a in found[i + 1 :]]
         if ordered and ordered[-1] == action:
@@ -371,8 +363,10 @@ def read_actions_evidence(
     )
     if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
-        where.insert(0, None)
-    return tuple((action, _clause_at(pieces, at)) for action, at in zip(ordered, where, strict=True))
+        # read where it was shown moving, else where it was first described
+        described = next(p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text)))
+        where.insert(0, moving_at if moving_at is not None else described)
+    return tuple(ordered), tuple(where)
 
 
 _PRECRASH_LEFT = re.compile(
@@ -382,7 +376,7 @@ _PRECRASH_LEFT = re.compile(
 )
 
 
-def precrash_wrong_way(sents: list[str]) -> set[str]:
+def precrash_wrong_way(sents: list[str]) -> dict[str, int]:
     """Vehicles whose coded pre-crash event ("travelling over the lane line on the left side"), often written
-    after the impact, says they went into the opposing lane."""
-    return {m.group(1) for s in sents if (m := _PRECRASH_LEFT.search(s))}
+    after the impact, says they went into the opposing lane; each with the index of the sentence that says so."""
+    return {m.group(1): i for i, s in enumerate(sents) if (m := _PRECRASH_LEFT.search(s))}

@@ -156,11 +156,16 @@ def _said_part(sentence: str) -> CrashType | None:
 def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash:
     """The first impact's crash: read from its sentence (index `impact`), else from a later sentence that
     restates it, else from an earlier one that says "head-on"."""
+    return read_crash_at(sents, impact, carry)[0]
+
+
+def read_crash_at(sents: list[str], impact: int, carry: str | None = None) -> tuple[Crash, int]:
+    """`read_crash`, and the index of the sentence it was read from (-1: none)."""
     order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
     for i in order:
         crash = read_sentence(sents[i], carry if i == impact else None)
         if crash is not None:
-            return crash
-    if any(_HEAD_ON.search(s) for s in sents[: impact + 1]):
-        return Crash(CrashType.FRONTAL)
-    return Crash()
+            return crash, i
+    if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:
+        return Crash(CrashType.FRONTAL), said
+    return Crash(), -1

@@ -21,7 +21,9 @@ from typing import Any
 
 import jsonschema
 from sovarc.compiler.frontend import prompting
+from sovarc.compiler.frontend.evidence import Alignment, evidence_of_span, keep_stated
 from sovarc.compiler.frontend.providers.base import Provider
+from sovarc.compiler.frontend.text import prepare, sentences, up_to_first_impact
 from sovarc.dsl import verify
 from sovarc.dsl.errors import Severity
 from sovarc.dsl.ir import (
@@ -31,6 +33,8 @@ from sovarc.dsl.ir import (
     Crash,
     CrashType,
     Heading,
+    Provenance,
+    Reader,
     Role,
     Scenario,
     Side,
@@ -153,6 +157,35 @@ def _crash_words(c: Crash) -> str:
     return f"{c.type} by {c.striker} into {c.victim}"
 
 
+def attach_evidence(scenario: Scenario, fact: str, start: int, end: int, report: str, reader: Reader) -> Scenario:
+    """The scenario with the report's characters `start`..`end` as the evidence of `fact` (a path such as
+    `crash.type`), read by `reader`; evidence another reader gave that fact is replaced, since its reading
+    was not kept."""
+    provenance = scenario.provenance or Provenance()
+    kept = tuple(e for e in provenance.evidence if e.fact != fact)
+    found = evidence_of_span(report, fact, start, end, reader)
+    return replace(scenario, provenance=replace(provenance, evidence=(*kept, found)))
+
+
+def shown_span(text: str) -> tuple[int, int]:
+    """The report's characters the model is shown: from the start to the end of the first impact's sentence.
+
+    The model's answer names no sentence for each fact yet, so this range is the evidence of every fact the
+    model's reading gives."""
+    sents = up_to_first_impact(sentences(prepare(text)))
+    found = Alignment(" ".join(sents), text).span(0, len(" ".join(sents)))
+    return found if found is not None else (0, len(text))
+
+
+def _model_evidence(rules: Scenario, merged: Scenario, text: str) -> Scenario:
+    """Evidence for the facts the model's reading gave (those where the merged scenario is not the rules')."""
+    start, end = shown_span(text)
+    for f in ("type", "striker", "victim"):
+        if getattr(merged.crash, f) != getattr(rules.crash, f) and not isinstance(getattr(merged.crash, f), Unknown):
+            merged = attach_evidence(merged, f"crash.{f}", start, end, text, Reader.MODEL)
+    return keep_stated(merged)
+
+
 def model_reading(
     rules: Scenario, text: str, provider: Provider, max_repairs: int = MAX_REPAIRS
 ) -> tuple[Scenario, list[str]]:
@@ -173,7 +206,7 @@ def model_reading(
         if not problems:
             if attempt:
                 notes.append(f"the model's answer was repaired in {attempt} round(s)")
-            return merged, notes
+            return _model_evidence(rules, merged, text), notes
         user = prompting.repair_prompt(narrative, ids, answer_text.strip(), problems)
     return rules, [
         f"the model gave no usable answer after {max_repairs} repair round(s) ({'; '.join(problems)}); "

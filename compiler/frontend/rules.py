@@ -12,10 +12,12 @@ from __future__ import annotations
 import hashlib
 import re
 from dataclasses import replace
+from typing import Any
 
-from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
+from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import read_crash
+from sovarc.compiler.frontend.crash import read_crash, read_crash_at
+from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
@@ -65,19 +67,36 @@ def _number(word: str) -> int:
     return int(word) if word.isdigit() else _NUM[word.lower()]
 
 
-def extract_environment(text: str) -> Environment:
+# A span a reader read a fact from: the fact's path, the text it is in ("named": the prepared report,
+# "joined": its sentences joined by one space), start and end. See `evidence.Locator`.
+Spot = tuple[str, str, int, int]
+
+
+def read_environment(text: str) -> tuple[Environment, list[Spot]]:
+    """The environment, and the words each fact was read from."""
     low = text.lower()
-    weather = tuple(w for w, pattern in _WEATHER if re.search(pattern, low))
+    weather: list[Weather] = []
+    spots: list[Spot] = []
+    for w, pattern in _WEATHER:
+        if m := re.search(pattern, low):
+            weather.append(w)
+            spots.append(("environment.weather", "named", *m.span()))
     lighting: list[Lighting] = []
-    if re.search(_DAYLIGHT, low):  # stated outright, it wins over "the night before" and the like
+    if m := re.search(_DAYLIGHT, low):  # stated outright, it wins over "the night before" and the like
         lighting.append(Lighting.DAYLIGHT)
-    elif re.search(_LIT, low):
+    elif m := re.search(_LIT, low):
         lighting += [Lighting.DARK, Lighting.STREET_LIGHTS]
-    elif re.search(_DARK, low):
+    elif m := re.search(_DARK, low):
         lighting.append(Lighting.DARK)
-    elif re.search(_DAY, low):
+    elif m := re.search(_DAY, low):
         lighting.append(Lighting.DAYLIGHT)
-    return Environment(weather or UNKNOWN, tuple(lighting) or UNKNOWN)
+    if m:
+        spots.append(("environment.lighting", "named", *m.span()))
+    return Environment(tuple(weather) or UNKNOWN, tuple(lighting) or UNKNOWN), spots
+
+
+def extract_environment(text: str) -> Environment:
+    return read_environment(text)[0]
 
 
 def first_speed(text: str) -> Speed | Unknown:
@@ -89,43 +108,59 @@ def first_speed(text: str) -> Speed | Unknown:
     return Speed(found[0][0], SpeedUnit.MPH) if found else UNKNOWN
 
 
-def extract_speed_limit(text: str) -> Speed | Unknown:
-    """The posted limit; with several (a side road, a ramp, a school zone), the lowest, as the ground truth has it."""
-    limits: list[Speed] = []
-    for sentence in sentences(text):
+def read_speed_limit(text: str) -> tuple[Speed | Unknown, int]:
+    """The posted limit and the index of the sentence that states it (-1 if none); with several (a side road,
+    a ramp, a school zone), the lowest, as the ground truth has it."""
+    limits: list[tuple[Speed, int]] = []
+    for i, sentence in enumerate(sentences(text)):
         if re.search(r"speed limits?|posted|limit", sentence, re.IGNORECASE):
             found = [(int(v), u.lower()) for v, u in _SPEED.findall(sentence)]
             metric = [Speed(v, SpeedUnit.KMH) for v, u in found if u != "mph"]
-            limits += metric or [Speed(v, SpeedUnit.MPH) for v, u in found]
-    return min(limits, key=Speed.to_mps) if limits else UNKNOWN
+            limits += [(limit, i) for limit in metric or [Speed(v, SpeedUnit.MPH) for v, u in found]]
+    return min(limits, key=lambda li: li[0].to_mps()) if limits else (UNKNOWN, -1)
 
 
-def extract_lanes(text: str) -> int | Unknown:
-    """Lanes of the widest road, both directions together."""
+def extract_speed_limit(text: str) -> Speed | Unknown:
+    return read_speed_limit(text)[0]
+
+
+def read_lanes(text: str) -> tuple[int | Unknown, tuple[int, int] | None]:
+    """Lanes of the widest road, both directions together, and where the count was read."""
     low = text.lower()
-    counts: list[int] = []
+    counts: list[tuple[int, tuple[int, int]]] = []
     each = r"(?: of travel)? (?:in )?(?:each|either|per|both)(?: the \w+ and \w+)? directions?"
     for m in re.finditer(_NUMBER + r"[- ]lanes?" + each, low):
-        counts.append(2 * _number(m.group(1)))
+        counts.append((2 * _number(m.group(1)), m.span()))
     for m in re.finditer(_NUMBER + r"[- ]lanes?\b(?!" + each + ")", low):
         tail = low[m.end() : m.end() + 60]
-        if re.match(
+        if t := re.match(
             r",? ?(?:\(|of travel\b|(?:[\w/-]+,? ){0,4}?(?:two-way|undivided|divided|roadway|road|highway|street|"
             r"t-intersection|intersection|interstate|one-way|avenue|boulevard|arterial|freeway|expressway|route)\b|"
             r"(?:residential|rural|urban|city|county|state))",
             tail,
         ):
-            counts.append(_number(m.group(1)))
-    return max(counts) if counts else UNKNOWN
+            counts.append((_number(m.group(1)), (m.start(), m.end() + t.end())))
+    if not counts:
+        return UNKNOWN, None
+    return max(counts, key=lambda c: c[0])
+
+
+def extract_lanes(text: str) -> int | Unknown:
+    return read_lanes(text)[0]
+
+
+def read_road_kind(text: str) -> tuple[RoadKind, tuple[int, int] | None]:
+    """The kind of road, and the words that say it (none for a straight road: no junction was named)."""
+    low = text.lower()
+    if m := re.search(r"\b['\"]?[ty]['\"]?[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg", low):
+        return RoadKind.T_JUNCTION, m.span()
+    if m := re.search(r"\bintersection\b|\bintersecting\b", low):
+        return RoadKind.INTERSECTION, m.span()
+    return RoadKind.STRAIGHT, None
 
 
 def extract_road_kind(text: str) -> RoadKind:
-    low = text.lower()
-    if re.search(r"\b['\"]?[ty]['\"]?[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg", low):
-        return RoadKind.T_JUNCTION
-    if re.search(r"\bintersection\b|\bintersecting\b", low):
-        return RoadKind.INTERSECTION
-    return RoadKind.STRAIGHT
+    return read_road_kind(text)[0]
 
 
 # A heading said with a verb of motion ("traveling west", "was eastbound") is the vehicle's own; a lane's
@@ -153,7 +188,7 @@ _BOUND = re.compile(
 )
 
 
-def _heading(pieces: list[Piece], after_impact: bool = False) -> Heading | Unknown:
+def _heading(pieces: list[Piece], after_impact: bool = False) -> tuple[Heading | Unknown, Piece | None, int]:
     """The heading the pieces state, the surest way of saying it first (see above). After the impact only a
     verb of motion counts: vehicles spin, come to rest facing anywhere and end up in other lanes."""
     for pattern in (_MOVING_HEADING,) if after_impact else (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING):
@@ -166,8 +201,8 @@ def _heading(pieces: list[Piece], after_impact: bool = False) -> Heading | Unkno
                     continue
                 if after_impact and re.search(r"\brest\b", text[max(0, m.start() - 20) : m.start()]):
                     continue
-                return Heading(m.group(1).lower())
-    return UNKNOWN
+                return Heading(m.group(1).lower()), piece, m.start()
+    return UNKNOWN, None, 0
 
 
 def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unknown:
@@ -198,22 +233,22 @@ _ONE_LANE_ROAD = re.compile(
 )
 
 
-def _lane_of(pieces: list[Piece], lanes: int | Unknown, each_way: int | Unknown) -> int | Unknown:
+def _lane_of(pieces: list[Piece], lanes: int | Unknown, each_way: int | Unknown) -> tuple[int | Unknown, Piece | None]:
     """The lane a vehicle started in: not one it turned into, nor one it came to rest in after the impact."""
     for piece in pieces:
         text = re.sub(r"\b(?:turn|turned|turning) (?:\w+ ){0,3}into (?:the )?[^.,;]*", " ", piece.text)
         text = re.sub(r"[^.,;]*\b(?:rest|pushed|spun|rotated)\b[^.,;]*", " ", text)
         if not isinstance(lane := _lane(text, lanes, each_way), Unknown):
-            return lane
-    return UNKNOWN
+            return lane, piece
+    return UNKNOWN, None
 
 
-def _speed(pieces: list[Piece]) -> Speed | Unknown:
+def _speed(pieces: list[Piece]) -> tuple[Speed | Unknown, Piece | None]:
     for piece in pieces:
         speed = first_speed(piece.text)
         if not re.search(r"\blimit|\bposted", piece.text, re.IGNORECASE) and not isinstance(speed, Unknown):
-            return speed
-    return UNKNOWN
+            return speed, piece
+    return UNKNOWN, None
 
 
 _SAME_WAY = re.compile(
@@ -229,28 +264,34 @@ _BOTH = re.compile(
 )
 
 
-def _shared_headings(sents: list[str], people: list[Participant]) -> list[Participant]:
+def _shared_headings(sents: list[str], people: list[Participant], spots: list[Spot]) -> list[Participant]:
     """Headings and lanes stated once for two vehicles: "V1 and V2 were traveling north", "V1 ... behind V2",
-    "V2 was stopped in the same lane ahead of V1"."""
+    "V2 was stopped in the same lane ahead of V1". The sentence is the evidence of each fact it fills."""
     heading = {p.id: p.heading for p in people}
     lane = {p.id: p.lane for p in people}
     people_by = {p.id: p for p in people}
-    for sentence in sents:
+
+    def fill(table: dict[str, Any], pid: str, value: Any, i: int) -> None:
+        if isinstance(table[pid], Unknown) and not isinstance(value, Unknown):
+            table[pid] = value
+            spots.append((f"{pid}.{'heading' if table is heading else 'lane'}", "sentence", i, 0))
+
+    for i, sentence in enumerate(sents):
         if m := _BOTH.search(sentence):
             for pid in m.group(1, 2):
-                if isinstance(heading.get(pid), Unknown):
-                    heading[pid] = Heading(m.group(3).lower())
+                if pid in heading:
+                    fill(heading, pid, Heading(m.group(3).lower()), i)
         if (m := _SAME_LANE.search(sentence)) and m.group(1) != m.group(2):
             a, b = people_by[m.group(1)], people_by[m.group(2)]
-            lane[a.id] = lane[a.id] if not isinstance(lane[a.id], Unknown) else lane[b.id]
-            lane[b.id] = lane[b.id] if not isinstance(lane[b.id], Unknown) else lane[a.id]
+            fill(lane, a.id, lane[b.id], i)
+            fill(lane, b.id, lane[a.id], i)
         if m := _SAME_WAY.search(sentence):
             a, b = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
             if a in heading and b in heading:
                 if isinstance(heading[a], Unknown):
-                    heading[a] = heading[b]
+                    fill(heading, a, heading[b], i)
                 elif isinstance(heading[b], Unknown):
-                    heading[b] = heading[a]
+                    fill(heading, b, heading[a], i)
     return [replace(p, heading=heading[p.id], lane=lane[p.id]) for p in people]
 
 
@@ -261,7 +302,7 @@ _SCENE = re.compile(
 )
 
 
-def _scene(text: str, people: list[Participant], parked: set[str]) -> list[Participant]:
+def _scene(text: str, people: list[Participant], parked: set[str], spots: list[Spot]) -> list[Participant]:
     """ "The crash occurred in the right lane of the southbound lanes": when no vehicle's own heading is stated,
     the moving ones all drove so (and in that lane)."""
     moving = [p for p in people if p.role is Role.VEHICLE and p.id not in parked]
@@ -269,6 +310,10 @@ def _scene(text: str, people: list[Participant], parked: set[str]) -> list[Parti
     if m is None or not moving or not all(isinstance(p.heading, Unknown) for p in moving):
         return people
     lane = 1 if m.group(1) and m.group(1).lower() in ("right", "curb") else UNKNOWN
+    for p in moving:
+        spots.append((f"{p.id}.heading", "named", *m.span()))
+        if isinstance(p.lane, Unknown):
+            spots.append((f"{p.id}.lane", "named", *m.span()))  # dropped below if it stays unknown
     return [
         replace(p, heading=Heading(m.group(2).lower()), lane=lane if isinstance(p.lane, Unknown) else p.lane)
         if p in moving
@@ -308,11 +353,11 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         ids = [pid for pid in ids if pid.startswith("V") or pid in involved]
     parts = pieces(sents, ids)
     mine = by_participant(parts, ids)
-    lanes = extract_lanes(named)
-    kind = extract_road_kind(named)
+    lanes, lanes_at = read_lanes(named)
+    kind, kind_at = read_road_kind(named)
     before = [s for s in sents[: impact + 1]] if impact >= 0 else sents
     carry = next((p.who[0] for p in parts if p.sentence == impact and p.who), None)
-    crash = read_crash(sents, impact, carry)
+    crash, crash_at = read_crash_at(sents, impact, carry)
     # The crash may be read from a later sentence that restates the impact ("The front of V1 then struck a
     # pedestrian"): whoever it names as striker or victim is a party, even if first named there.
     roles = {r for r in (crash.striker, crash.victim) if isinstance(r, str)}
@@ -324,40 +369,93 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     clauses: dict[str, list[Piece]] = {}
     people = []
     parked: set[str] = set()
+    spots: list[Spot] = []
     for pid in ids:
         early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
         late = [p for p in mine[pid] if p not in early]
         clauses[pid] = early
-        heading = _heading(early)
-        heading = _heading(late, after_impact=True) if isinstance(heading, Unknown) else heading
+        heading, said, at = _heading(early)
+        heading, said, at = _heading(late, after_impact=True) if isinstance(heading, Unknown) else (heading, said, at)
         each_way = per_direction(" ".join(p.text for p in early), named, lanes, kind is RoadKind.STRAIGHT)
-        lane = _lane_of(early, lanes, each_way)
-        lane = _lane_of(late, lanes, each_way) if isinstance(lane, Unknown) else lane
+        lane, where = _lane_of(early, lanes, each_way)
+        lane, where = _lane_of(late, lanes, each_way) if isinstance(lane, Unknown) else (lane, where)
+        speed, fast = _speed(early)
+        spots += [_clause(f"{pid}.heading", said, at)] if said else []
+        spots += [_clause(f"{pid}.{fact}", piece) for fact, piece in _facts(lane=where, speed=fast)]
         if any(_PARKED.search(p.text) for p in early):
             parked.add(pid)
         if pid.startswith("P"):
-            walking = any(_WALKING.search(p.text) for p in early) and not any(_CROSSING.search(p.text) for p in early)
+            walked = next((p for p in early if _WALKING.search(p.text)), None)
+            crossed = next((p for p in early if _CROSSING.search(p.text)), None)
+            walking = walked is not None and crossed is None
             action = Action(ActionKind.WALK if walking else ActionKind.CROSS)
-            people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, _speed(early), (action,)))
+            people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, speed, (action,)))
+            if (piece := walked if walking else crossed) is not None:
+                spots.append(_clause(f"{pid}.actions[1]", piece))
             if not walking and crash.victim == pid and isinstance(crash.type, Unknown):
                 crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
+                if crossed is not None:
+                    spots.append(_clause("crash.type", crossed))
             continue
         behind = crash.type is CrashType.REAR_END and crash.victim == pid
-        actions = read_actions(early, kind, heading, crash.striker == pid, behind, crash.type is CrashType.SIDE)
+        side = crash.type is CrashType.SIDE
+        actions, ats = read_actions_at(early, kind, heading, crash.striker == pid, behind, side)
+        spots += [
+            _clause(f"{pid}.actions[{n}]", p, at - p.at) for n, at in enumerate(ats, 1) if (p := _piece_at(early, at))
+        ]
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
             actions = (*actions, Action(ActionKind.RETROGRADE))
+            spots.append((f"{pid}.actions[{len(actions)}]", "sentence", wrong_way[pid], 0))
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
-        people.append(Participant(pid, Role.VEHICLE, heading, lane, _speed(early), actions))
-    people = _shared_headings(before, people)
-    people = _scene(named, people, parked)
+        people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
+    people = _shared_headings(before, people, spots)
+    people = _scene(named, people, parked, spots)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
-    provenance = Provenance(report_path or UNKNOWN, hashlib.sha256(text.encode("utf-8")).hexdigest(), "rules", UNKNOWN)
-    return Scenario(
-        name,
-        provenance,
-        extract_environment(named),
-        Road(kind, lanes, extract_speed_limit(named)),
-        tuple(people),
-        crash,
+    environment, found = read_environment(named)
+    spots += found
+    speed_limit, limit_at = read_speed_limit(named)
+    spots += [("road.speed_limit", "sentence", limit_at, 0)] if limit_at >= 0 else []
+    spots += [("road.lanes", "named", *lanes_at)] if lanes_at else []
+    spots += [("road.kind", "named", *kind_at)] if kind_at else []
+    spots += [(f"crash.{f}", "sentence", crash_at, 0) for f in ("type", "striker", "victim")] if crash_at >= 0 else []
+    locate = Locator(text, named, sents)
+    provenance = Provenance(
+        report_path or UNKNOWN,
+        hashlib.sha256(text.encode("utf-8")).hexdigest(),
+        "rules",
+        UNKNOWN,
+        evidence=tuple(locate.evidence(*spot) for spot in spots),
     )
+    scenario = Scenario(name, provenance, environment, Road(kind, lanes, speed_limit), tuple(people), crash)
+    return keep_stated(scenario)
+
+
+def _facts(**pieces: Piece | None) -> list[tuple[str, Piece]]:
+    return [(fact, piece) for fact, piece in pieces.items() if piece is not None]
+
+
+# Where one clause of a piece ends and the next begins: "was traveling north in the left lane and proceeded to
+# make a left turn".
+_CLAUSE_BREAK = re.compile(r"[,;:]| and (?:then )?| then | but | when | as ", re.I)
+
+
+def _clause(fact: str, piece: Piece, offset: int | None = None) -> Spot:
+    """A fact read in a piece of text about a participant: the clause around `offset` (where the reader
+    matched), or the whole piece when the match was made in a reworded copy of it (see `what_was_done`)."""
+    text = piece.text
+    if offset is None or not 0 <= offset < len(text) or what_was_done(text) != text:
+        return (fact, "joined", piece.at, piece.at + len(text))
+    breaks = list(_CLAUSE_BREAK.finditer(text))
+    start = max((m.end() for m in breaks if m.end() <= offset), default=0)
+    end = min((m.start() for m in breaks if m.start() > offset), default=len(text))
+    return (fact, "joined", piece.at + start, piece.at + end)
+
+
+def _piece_at(pieces: list[Piece], at: int) -> Piece | None:
+    """The piece an action was read in; an action an after-clause puts first, or one inferred right after
+    another, sits one character off its piece."""
+    for probe in (at, at + 1, at - 1):
+        if piece := next((p for p in pieces if p.at <= probe < p.at + len(p.text)), None):
+            return piece
+    return None

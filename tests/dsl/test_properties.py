@@ -13,10 +13,12 @@ from sovarc.dsl.ir import (
     Crash,
     CrashType,
     Environment,
+    Evidence,
     Heading,
     Lighting,
     Participant,
     Provenance,
+    Reader,
     Road,
     RoadKind,
     Role,
@@ -56,6 +58,7 @@ names = st.from_regex(r"[A-Za-z_][A-Za-z0-9_]{0,8}", fullmatch=True).filter(
             "assumed",
             "sha256",
             "speed_limit",
+            "evidence",
         }
     )
 )
@@ -83,10 +86,28 @@ participants = st.builds(
     maybe(st.lists(actions, max_size=5).map(tuple)),
 )
 paths = st.tuples(names, names).map(".".join)
+fact_paths = st.one_of(
+    paths,
+    st.sampled_from(["environment.weather", "road.lanes", "crash.type"]),
+    st.tuples(names, st.integers(1, 9)).map(lambda t: f"{t[0]}.actions[{t[1]}]"),
+)
+evidence = st.builds(
+    lambda fact, reader, start, quote: Evidence(fact, reader, start, start + len(quote), quote),
+    fact_paths,
+    st.sampled_from(Reader),
+    st.integers(0, 5000),
+    st.text(st.characters(blacklist_categories=("Cs",)), min_size=1, max_size=30),
+)
 provenances = st.one_of(
     st.none(),
     st.builds(
-        Provenance, maybe(texts), maybe(texts), maybe(texts), maybe(texts), st.lists(paths, max_size=3).map(tuple)
+        Provenance,
+        maybe(texts),
+        maybe(texts),
+        maybe(texts),
+        maybe(texts),
+        st.lists(paths, max_size=3).map(tuple),
+        st.lists(evidence, max_size=4).map(tuple),
     ),
 )
 scenarios = st.builds(

@@ -11,7 +11,7 @@
 from __future__ import annotations
 
 import pytest
-from sovarc.compiler.frontend.actions import read_actions_evidence
+from sovarc.compiler.frontend.actions import read_actions_at
 from sovarc.compiler.frontend.clauses import pieces
 from sovarc.compiler.frontend.rules import extract
 from sovarc.dsl.ir import Heading, RoadKind, Unknown
@@ -203,9 +203,10 @@ def test_failing_or_going_without_is_negation_and_a_stop_is_said_many_ways(said:
 def test_each_action_keeps_the_clause_it_was_read_from() -> None:
     from_sents = ["V2 was stopped facing north.", "V2 then began to turn left and was struck by the front of V1."]
     parts = [p for p in pieces(from_sents, ["V1", "V2"]) if "V2" in p.who]
-    read = read_actions_evidence(parts, RoadKind.INTERSECTION, Heading.NORTH, False)
-    assert not isinstance(read, Unknown)
-    assert [(a.kind.value, p.text if p else None) for a, p in read] == [
+    actions, ats = read_actions_at(parts, RoadKind.INTERSECTION, Heading.NORTH, False)
+    assert not isinstance(actions, Unknown)
+    clause = [next(p for p in reversed(parts) if p.at <= at) for at in ats]
+    assert [(a.kind.value, p.text) for a, p in zip(actions, clause, strict=True)] == [
         ("stop", "V2 was stopped facing north."),
         ("turn_left", "V2 then began to turn left and was struck by the front of V1."),
     ]
