@@ -337,8 +337,12 @@ def lanes_touched(line: Polyline, match: SiteMatch, margin: float = 0.3) -> set[
         for lane in arm.incoming + arm.outgoing:
             shape = np.asarray(lane.shape)
             reach = lane.width / 2.0 + margin
-            if (shape.max(axis=0) < low - reach).any() or (shape.min(axis=0) > high + reach).any():
+            lane_low, lane_high = shape.min(axis=0), shape.max(axis=0)
+            if (lane_high < low - reach).any() or (lane_low > high + reach).any():
                 continue  # the lane's box misses the line's
-            if (Polyline(lane.shape).distances(points) <= reach).any():
+            # only points near the lane's box can be within reach of it (the margin is far
+            # above rounding), so the distances of the others need not be measured
+            near = ((points >= lane_low - reach - 1e-6) & (points <= lane_high + reach + 1e-6)).all(axis=1)
+            if near.any() and (Polyline(lane.shape).distances(points[near]) <= reach).any():
                 found.update(lane.lanes)  # every SUMO lane of a chained lane
     return found

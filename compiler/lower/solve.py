@@ -119,9 +119,10 @@ class Solution:
 
 
 class ConflictError(Exception):
-    def __init__(self, facts: list[Fact]) -> None:
+    def __init__(self, facts: list[Fact], *, deadline: bool = True) -> None:
         super().__init__(", ".join(f.label for f in facts))
         self.facts = facts
+        self.deadline = deadline  # False: Z3's unsat core leaves the deadline (t_max) out
 
 
 @dataclass
@@ -141,8 +142,11 @@ def solve(problem: Problem) -> Solution:
     for t_max in NICE_T_MAX:
         try:
             return _solve(problem, nice=True, t_max=t_max)
-        except ConflictError:
-            pass
+        except ConflictError as conflict:
+            if not conflict.deadline:
+                # The natural passes differ in their deadline alone: constraints that conflict
+                # without it conflict under a later one too, so that pass would only fail again.
+                break
     return _solve(problem, nice=False, t_max=T_MAX)
 
 
@@ -170,6 +174,7 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
 
     t_hit = z.real("t_hit")
     need("impact", z3.And(t_hit >= 2.0, t_max >= t_hit))
+    deadline = f"impact#{len(tracked) - 1}"  # the one constraint that names t_max
     motions = {pid: _motion(pid, r, problem, need, nice, z) for pid, r in problem.routes.items()}
     _apart_at_start(problem, motions, need)
     _contact(problem, motions, t_hit, need, nice, z)
@@ -185,7 +190,9 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
         solver.assert_and_track(constraint, z3.Bool(f"{label}#{i}", z.ctx))
     result = solver.check()
     if result == z3.unsat:
-        raise ConflictError([problem.facts[label] for label in sorted({names[str(b)] for b in solver.unsat_core()})])
+        core = {str(b) for b in solver.unsat_core()}
+        facts = [problem.facts[label] for label in sorted({names[b] for b in core})]
+        raise ConflictError(facts, deadline=deadline in core)
     if result == z3.unknown:
         solver = _solver(z, PLAIN_MS)
         solver.add(*(constraint for _, constraint in tracked))

@@ -1,16 +1,24 @@
-"""Z3's answer does not hang on its time limits: a problem one engine is lost on goes to the other."""
+"""Z3's answer does not hang on its time limits: a problem one engine is lost on goes to the other;
+and a pass that can only fail again is not tried."""
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Callable
 from pathlib import Path
 
+import pytest
+import sovarc.compiler.lower as lowering
 import sumo
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.compiler.lower import lower_on, sites_for
-from sovarc.compiler.lower.solve import NICE_T_MAX
+from sovarc.compiler.lower.solve import NICE_T_MAX, T_MAX, ConflictError, Fact, Problem, Solution
 from sovarc.compiler.maps import load_map
+from sovarc.dsl import parse
 
-from tests.conftest import SHARED, requires_shared
+from tests.conftest import EXAMPLES, SHARED, requires_shared
+
+solve_module = sys.modules["sovarc.compiler.lower.solve"]  # the package's `solve` is the function
 
 TRUTH = SHARED / "data" / "nmvccs" / "truth"
 CITY = Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
@@ -28,3 +36,55 @@ def test_a_hard_nonlinear_problem_is_solved_in_the_natural_pass_not_given_up_on_
     lowered = lower_on(staged, match, road_map, notes)
     assert not lowered.solution.relaxed
     assert lowered.solution.impact_time <= NICE_T_MAX[0]
+
+
+def _every_pass(problem: Problem) -> Solution:
+    """`solve` as first written: every natural pass, then the relaxed one."""
+    for t_max in NICE_T_MAX:
+        try:
+            return solve_module._solve(problem, nice=True, t_max=t_max)
+        except ConflictError:
+            pass
+    return solve_module._solve(problem, nice=False, t_max=T_MAX)
+
+
+def _outcome(run: Callable[[Problem], Solution], problem: Problem) -> Solution | list[Fact]:
+    try:
+        return run(problem)
+    except ConflictError as conflict:
+        return conflict.facts
+
+
+def test_a_natural_pass_whose_conflict_leaves_out_the_deadline_is_not_tried_again_later(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The natural passes differ in their deadline alone: a conflict without it is a conflict under
+    the later deadline too, so that pass is skipped, and every answer is the one all passes give."""
+    problems: list[Problem] = []
+    real = lowering.solve
+
+    def keep(problem: Problem) -> Solution:
+        problems.append(problem)
+        return real(problem)
+
+    monkeypatch.setattr(lowering, "solve", keep)
+    path = EXAMPLES / "scenarios" / "straight_double_yellow_pass_frontal.sov"
+    scenario = parse(path.read_text(encoding="utf-8"), str(path))
+    lowering.lower(scenario, load_map(EXAMPLES / "maps" / "town.net.xml"), roads=3)
+    monkeypatch.setattr(lowering, "solve", real)
+    passes: list[float] = []
+    solve_pass = solve_module._solve
+
+    def counted(problem: Problem, nice: bool, t_max: float) -> Solution:
+        passes.append(t_max)
+        return solve_pass(problem, nice, t_max)
+
+    skipped = 0
+    for problem in problems:
+        monkeypatch.setattr(solve_module, "_solve", counted)
+        passes.clear()
+        outcome = _outcome(solve_module.solve, problem)
+        skipped += NICE_T_MAX[0] in passes and NICE_T_MAX[1] not in passes and T_MAX in passes
+        monkeypatch.setattr(solve_module, "_solve", solve_pass)
+        assert outcome == _outcome(_every_pass, problem)
+    assert skipped >= 1
