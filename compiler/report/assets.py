@@ -1,0 +1,218 @@
+"""The page's inline CSS and script (report.html loads nothing from anywhere).
+
+The script plays each card's crash on its canvas from the scene JSON beside it
+(plan_picture.scene): lanes and lane lines, each body's corners every `step` seconds (the geometry
+kernel's, interpolated between frames), moving at the plan's time until impact, where they stop for a
+moment before the replay starts again. A slider scrubs; the button pauses. Each canvas records the
+frames it drew in `data-drawn`, and any script error is counted on the body (`data-errors`), so a
+test can read both from the page's DOM.
+"""
+
+STYLE = """
+body{font:14px/1.4 system-ui,sans-serif;margin:0 auto;max-width:1080px;padding:0 16px 40px;
+  color:#222;background:#fafafa}
+header h1{margin:16px 0 4px;font-size:22px}
+h2{font-size:18px;margin:24px 0 6px;border-bottom:1px solid #ddd;padding-bottom:4px}
+h3{font-size:15px;margin:0}
+.hint{color:#666;font-size:12px;margin:2px 0}
+table{border-collapse:collapse;background:#fff}
+th,td{border:1px solid #ddd;padding:4px 10px;text-align:left}
+thead th{background:#f0f0f0}
+tr.total th,tr.total td{font-weight:bold;background:#f7f7f7}
+.pass{color:#137333}.fail{color:#b3261e}
+.toc{margin:12px 0;font-size:13px}
+.source,.meta,.crash{margin:2px 0;font-size:13px}
+.crash{font-weight:600}
+.provenance{font-size:12px;margin:4px 0 8px}
+.provenance dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 12px;margin:4px 0}
+.provenance dt{color:#666}.provenance dd{margin:0;word-break:break-all}
+.card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:10px 12px;margin:10px 0}
+.card.failed{border-color:#e6b3b0;background:#fff8f7}
+.badges{margin:4px 0}
+.badge{display:inline-block;border-radius:10px;padding:1px 9px;margin-right:6px;font-size:12px;
+  text-decoration:none;border:1px solid}
+.badge.pass{background:#e6f4ea;border-color:#137333}.badge.fail{background:#fce8e6;border-color:#b3261e}
+.badge.none{color:#666;border-color:#bbb}
+.views{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}
+.views img{border:1px solid #ddd;max-width:100%;height:auto}
+.anim{margin:0}
+.anim canvas{border:1px solid #ddd;display:block;max-width:100%}
+.anim figcaption{display:flex;gap:8px;align-items:center;font-size:12px;margin-top:4px}
+.anim .scrub{flex:1}
+.anim .clock{min-width:130px;font-variant-numeric:tabular-nums}
+.files{font-size:12px;margin-top:6px}
+.files ul{columns:2;margin:4px 0}
+.error{color:#b3261e;font-size:13px}
+code{font-size:12px;background:#f3f3f3;padding:0 3px;border-radius:3px}
+"""
+
+SCRIPT = """
+(function () {
+  "use strict";
+  var errors = 0;
+  window.addEventListener("error", function () {
+    errors += 1;
+    document.body.setAttribute("data-errors", String(errors));
+  });
+  var HOLD = 1.5; // s the bodies rest at impact before the replay starts again
+
+  function Player(canvas) {
+    var scene = JSON.parse(document.getElementById(canvas.getAttribute("data-scene")).textContent);
+    var box = canvas.closest("figure");
+    this.canvas = canvas;
+    this.ctx = canvas.getContext("2d");
+    this.scene = scene;
+    this.play = box.querySelector(".play");
+    this.scrub = box.querySelector(".scrub");
+    this.clock = box.querySelector(".clock");
+    this.time = 0;
+    this.running = true;
+    this.last = null;
+    this.drawn = 0;
+    this.visible = true;
+    var v = scene.view;
+    this.scale = canvas.width / (2 * v[2]);
+    canvas.setAttribute("data-frames", String(scene.actors.length ? scene.actors[0].boxes.length : 0));
+    var self = this;
+    this.play.addEventListener("click", function () {
+      self.running = !self.running;
+      self.play.textContent = self.running ? "pause" : "play";
+      self.last = null;
+    });
+    this.scrub.addEventListener("input", function () {
+      self.running = false;
+      self.play.textContent = "play";
+      self.time = (Number(self.scrub.value) / 1000) * scene.impact.t;
+      self.draw();
+    });
+  }
+
+  Player.prototype.px = function (x, y) {
+    var v = this.scene.view;
+    return [(x - v[0] + v[2]) * this.scale, (v[1] + v[2] - y) * this.scale];
+  };
+
+  Player.prototype.path = function (flat, close) {
+    var ctx = this.ctx;
+    ctx.beginPath();
+    for (var i = 0; i + 1 < flat.length; i += 2) {
+      var p = this.px(flat[i], flat[i + 1]);
+      if (i === 0) ctx.moveTo(p[0], p[1]); else ctx.lineTo(p[0], p[1]);
+    }
+    if (close) ctx.closePath();
+  };
+
+  Player.prototype.corners = function (actor) {
+    // the kernel's corners at the two frames around the time, blended
+    var s = this.scene, n = actor.boxes.length;
+    var f = Math.min(this.time / s.step, n - 1);
+    var k = Math.min(Math.floor(f), n - 1), u = f - k;
+    var a = actor.boxes[k], b = actor.boxes[Math.min(k + 1, n - 1)];
+    var out = [];
+    for (var i = 0; i < a.length; i++) out.push(a[i] + u * (b[i] - a[i]));
+    return {corners: out, speed: actor.speeds[Math.round(f)]};
+  };
+
+  Player.prototype.draw = function () {
+    var s = this.scene, ctx = this.ctx, c = this.canvas, self = this;
+    ctx.setLineDash([]);
+    ctx.fillStyle = "#eef1e8";
+    ctx.fillRect(0, 0, c.width, c.height);
+    ctx.fillStyle = "#d6d6d6";
+    s.walkways.forEach(function (w) { self.path(w, true); ctx.fill(); });
+    ctx.fillStyle = "#9aa0a6";
+    ctx.strokeStyle = "#9aa0a6";
+    ctx.lineWidth = 0.5;
+    s.asphalt.forEach(function (a) { self.path(a, true); ctx.fill(); ctx.stroke(); });
+    ctx.lineWidth = 1;
+    s.lines.forEach(function (l) {
+      ctx.strokeStyle = l[0] === "centre" ? "#f2c200" : "#ffffff";
+      ctx.setLineDash(l[0] === "divider" ? [6, 6] : []);
+      self.path(l[1], false);
+      ctx.stroke();
+    });
+    ctx.setLineDash([]);
+    var hit = this.time >= s.impact.t - 1e-6;
+    var ip = this.px(s.impact.x, s.impact.y);
+    ctx.beginPath();
+    ctx.arc(ip[0], ip[1], s.impact.r * this.scale, 0, 2 * Math.PI);
+    ctx.fillStyle = hit ? "rgba(255,204,0,0.75)" : "rgba(255,204,0,0.3)";
+    ctx.fill();
+    s.actors.forEach(function (actor) {
+      ctx.strokeStyle = actor.colour;
+      ctx.globalAlpha = 0.5;
+      ctx.lineWidth = 1;
+      self.path(actor.path, false);
+      ctx.stroke();
+      ctx.globalAlpha = 1;
+      var now = self.corners(actor), q = now.corners;
+      self.path(q, true);
+      ctx.fillStyle = actor.colour;
+      ctx.fill();
+      ctx.strokeStyle = "#000";
+      ctx.stroke();
+      // heading: from the centre to the front face's middle (corners 0 and 3), and past it
+      var cx = (q[0] + q[2] + q[4] + q[6]) / 4, cy = (q[1] + q[3] + q[5] + q[7]) / 4;
+      var fx = (q[0] + q[6]) / 2, fy = (q[1] + q[7]) / 2;
+      var dx = fx - cx, dy = fy - cy, len = Math.hypot(dx, dy) || 1;
+      var reach = len + 1.5;
+      var a = self.px(cx, cy), b = self.px(cx + dx / len * reach, cy + dy / len * reach);
+      ctx.beginPath();
+      ctx.moveTo(a[0], a[1]);
+      ctx.lineTo(b[0], b[1]);
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      ctx.lineWidth = 1;
+      ctx.fillStyle = "#111";
+      ctx.font = "bold 12px system-ui,sans-serif";
+      var tag = actor.name + (actor.label === "other" ? "" : " (" + actor.label + ")");
+      ctx.fillText(tag + " " + Math.abs(now.speed).toFixed(0) + " km/h", a[0] + 8, a[1] - 8);
+    });
+    if (hit) {
+      ctx.strokeStyle = "#000";
+      ctx.lineWidth = 3;
+      ctx.beginPath();
+      ctx.moveTo(ip[0] - 7, ip[1] - 7); ctx.lineTo(ip[0] + 7, ip[1] + 7);
+      ctx.moveTo(ip[0] + 7, ip[1] - 7); ctx.lineTo(ip[0] - 7, ip[1] + 7);
+      ctx.stroke();
+      ctx.lineWidth = 1;
+      ctx.fillStyle = "#b3261e";
+      ctx.font = "bold 16px system-ui,sans-serif";
+      ctx.fillText("IMPACT", 10, 22);
+    }
+    this.clock.textContent =
+      "t = " + Math.min(this.time, s.impact.t).toFixed(1) + " s / impact " + s.impact.t.toFixed(1) + " s";
+    this.scrub.value = String(Math.round(Math.min(this.time / (s.impact.t || 1), 1) * 1000));
+    this.drawn += 1;
+    c.setAttribute("data-drawn", String(this.drawn));
+  };
+
+  Player.prototype.tick = function (now) {
+    if (this.running && this.visible) {
+      if (this.last !== null) this.time += (now - this.last) / 1000;
+      if (this.time > this.scene.impact.t + HOLD) this.time = 0;
+      this.draw();
+    }
+    this.last = this.running ? now : null;
+  };
+
+  // only the canvases on screen play: a batch's page may hold hundreds
+  var players = [];
+  var watch = "IntersectionObserver" in window ? new IntersectionObserver(function (entries) {
+    entries.forEach(function (e) { e.target.player.visible = e.isIntersecting; });
+  }) : null;
+  document.querySelectorAll("canvas[data-scene]").forEach(function (canvas) {
+    var p = new Player(canvas);
+    canvas.player = p;
+    p.draw();
+    players.push(p);
+    if (watch) watch.observe(canvas);
+  });
+  function frame(now) {
+    players.forEach(function (p) { p.tick(now); });
+    window.requestAnimationFrame(frame);
+  }
+  if (players.length) window.requestAnimationFrame(frame);
+  document.body.setAttribute("data-players", String(players.length));
+})();
+"""
