@@ -30,6 +30,8 @@ GROUND, ASPHALT, WALKWAY = "#eef1e8", "#9aa0a6", "#d6d6d6"
 LINE, CENTRE_LINE = "#ffffff", "#f2c200"
 AREA = "#ffcc00"
 FRAME_STEP = 0.1  # s between the animation's frames
+CLOSE_S = 2.0  # s before impact the close-up shows
+LABEL_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.8, "linewidth": 0}
 DPI = 100  # fixed: same plan, same bytes
 
 
@@ -139,8 +141,25 @@ def body_at(t: Trajectory, time: float) -> Box:
     return Box.of(t.body, at.x, at.y, at.heading)
 
 
+def close_view(plan: Plan) -> View:
+    """The close-up: the impact and every body over the last CLOSE_S seconds before it."""
+    points = [plan.impact.point]
+    for t in plan.trajectories:
+        for time in [*close_times(plan), plan.impact.time]:
+            points.extend(body_at(t, time).corners())
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    half = max(max(xs) - min(xs), max(ys) - min(ys), 16.0) / 2 + 3.0
+    return View((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2, half)
+
+
+def close_times(plan: Plan) -> list[float]:
+    """The close-up's bodies before impact: every half second over the last CLOSE_S seconds."""
+    return [plan.impact.time - k * 0.5 for k in range(int(CLOSE_S / 0.5), 0, -1) if plan.impact.time - k * 0.5 >= 0]
+
+
 def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
-    """The PNG bytes (matplotlib's Agg backend: no display needed; same plan, same bytes)."""
+    """The PNG bytes (matplotlib's Agg backend: no display needed; same plan, same bytes): the whole
+    plan on the left, bodies every few seconds; the last seconds before impact close up on the right."""
     # matplotlib loads here, not with the module: it takes longer to import than most commands
     # take to run, and only a command that draws needs it.
     import matplotlib
@@ -148,67 +167,83 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
-    from matplotlib.patches import Circle, FancyArrow, Patch, Polygon
+    from matplotlib.patches import Circle, FancyArrow, Patch, Polygon, Rectangle
 
-    view = view_of(plan)
-    fig, ax = plt.subplots(figsize=(7, 7), dpi=DPI)
-    ax.set_facecolor(GROUND)
+    view, close = view_of(plan), close_view(plan)
     lanes = lanes_in(road_map, view)
-    for outline in lanes.walkways:
-        ax.add_patch(Polygon(outline, closed=True, facecolor=WALKWAY, edgecolor=WALKWAY, linewidth=0.3, zorder=1))
-    for outline in lanes.asphalt:
-        ax.add_patch(Polygon(outline, closed=True, facecolor=ASPHALT, edgecolor=ASPHALT, linewidth=0.3, zorder=2))
-    for style, shape in lanes.lines:
-        xs, ys = zip(*shape, strict=True)
-        colour = CENTRE_LINE if style == "centre" else LINE
-        dashes = (0, (6, 6)) if style == "divider" else "solid"
-        ax.plot(xs, ys, color=colour, linewidth=1.0, linestyle=dashes, zorder=3)
-    ix, iy = plan.impact.point
-    ax.add_patch(Circle((ix, iy), plan.impact.radius, facecolor=AREA, edgecolor="#b38f00", alpha=0.55, zorder=4))
     actors = actors_of(plan)
-    ghosts = ghost_times(plan)
-    for actor in actors:
-        t = actor.trajectory
-        until = [s for s in t.samples if s.t <= plan.impact.time]
-        ax.plot([s.x for s in until], [s.y for s in until], color=actor.colour, linewidth=1.2, zorder=5)
-        for k, time in enumerate(ghosts):
-            box = body_at(t, time)
-            alpha = 0.15 + 0.35 * k / max(len(ghosts), 1)
-            ax.add_patch(Polygon(box.corners(), facecolor=actor.colour, edgecolor=actor.colour, alpha=alpha, zorder=6))
-            ax.annotate(f"{time:g}s", box.centre, fontsize=6, color="#333333", ha="center", va="center", zorder=7)
-        box = body_at(t, plan.impact.time)
-        ax.add_patch(Polygon(box.corners(), facecolor=actor.colour, edgecolor="black", linewidth=0.8, zorder=8))
-        _arrow(ax, FancyArrow, box, actor.colour)
-        sx, sy = box.centre
-        ax.annotate(f" {t.participant}", (sx, sy), fontsize=9, fontweight="bold", color=actor.colour,
-                    xytext=(8, 8), textcoords="offset points", zorder=10)  # fmt: skip
-    ax.plot([ix], [iy], marker="x", color="black", markersize=9, markeredgewidth=2, zorder=11)
+    fig, (whole, near) = plt.subplots(1, 2, figsize=(10, 5.6), dpi=DPI, width_ratios=(1, 1))
+    for ax, shown, ghosts, labelled in (
+        (whole, view, ghost_times(plan), False),
+        (near, close, close_times(plan), True),
+    ):
+        ax.set_facecolor(GROUND)
+        for outline in lanes.walkways:
+            ax.add_patch(Polygon(outline, closed=True, facecolor=WALKWAY, edgecolor=WALKWAY, linewidth=0.3, zorder=1))
+        for outline in lanes.asphalt:
+            ax.add_patch(Polygon(outline, closed=True, facecolor=ASPHALT, edgecolor=ASPHALT, linewidth=0.3, zorder=2))
+        for style, shape in lanes.lines:
+            xs, ys = zip(*shape, strict=True)
+            colour = CENTRE_LINE if style == "centre" else LINE
+            dashes = (0, (6, 6)) if style == "divider" else "solid"
+            ax.plot(xs, ys, color=colour, linewidth=1.0, linestyle=dashes, zorder=3)
+        ix, iy = plan.impact.point
+        ax.add_patch(Circle((ix, iy), plan.impact.radius, facecolor=AREA, edgecolor="#b38f00", alpha=0.55, zorder=4))
+        for actor in actors:
+            t = actor.trajectory
+            until = [s for s in t.samples if s.t <= plan.impact.time]
+            ax.plot([s.x for s in until], [s.y for s in until], color=actor.colour, linewidth=1.2, zorder=5)
+            ax.plot([until[0].x], [until[0].y], marker="o", color=actor.colour, markersize=4, zorder=5)
+            for k, time in enumerate(ghosts):
+                box = body_at(t, time)
+                alpha = 0.15 + 0.3 * k / max(len(ghosts), 1)
+                ax.add_patch(
+                    Polygon(box.corners(), facecolor=actor.colour, edgecolor=actor.colour, alpha=alpha, zorder=6)
+                )
+                if labelled or k % 2 == 0:
+                    ax.annotate(
+                        f"{time:g}", box.centre, fontsize=6, color="#222222", ha="center", va="center", zorder=7
+                    )
+            box = body_at(t, plan.impact.time)
+            ax.add_patch(Polygon(box.corners(), facecolor=actor.colour, edgecolor="black", linewidth=0.8, zorder=8))
+            _arrow(ax, FancyArrow, box, shown.half / 40.0)
+            ax.annotate(t.participant, box.centre, fontsize=9, fontweight="bold", color=actor.colour,
+                        xytext=(10, 10), textcoords="offset points", zorder=10,
+                        bbox=LABEL_BOX)  # fmt: skip
+        ax.plot([ix], [iy], marker="x", color="black", markersize=9, markeredgewidth=2, zorder=11)
+        ax.set_xlim(shown.cx - shown.half, shown.cx + shown.half)
+        ax.set_ylim(shown.cy - shown.half, shown.cy + shown.half)
+        ax.set_aspect("equal")
+        ax.tick_params(labelsize=7)
+    whole.add_patch(Rectangle((close.cx - close.half, close.cy - close.half), 2 * close.half, 2 * close.half,
+                              fill=False, edgecolor="black", linestyle="--", linewidth=0.8, zorder=12))  # fmt: skip
+    whole.set_title(f"whole plan (m): bodies at {', '.join(f'{g:g}' for g in ghost_times(plan))} s", fontsize=9)
+    near.set_title(f"close-up (m): the last {CLOSE_S:g} s, every 0.5 s, and at impact", fontsize=9)
     handles = [Patch(facecolor=a.colour, edgecolor="black", label=_legend_name(a)) for a in actors] + [
-        Patch(facecolor=AREA, alpha=0.55, label=f"collision area (r {plan.impact.radius:.1f} m)"),
+        Patch(facecolor=AREA, alpha=0.55, edgecolor="#b38f00", label=f"collision area (r {plan.impact.radius:.1f} m)"),
         Line2D([], [], marker="x", color="black", linestyle="none", markeredgewidth=2, label="impact point"),
-        Patch(facecolor="#888888", alpha=0.3, label=f"bodies at {', '.join(f'{g:g}' for g in ghosts)} s"),
+        Line2D([], [], color="black", marker=">", markersize=5, label="heading at impact"),
+        Patch(facecolor="#888888", alpha=0.3, label="body earlier (label: time, s)"),
+        Line2D([], [], color="#555555", marker="o", markersize=4, label="path from its start"),
     ]
-    ax.legend(handles=handles, loc="upper left", fontsize=8, framealpha=0.9)
-    ax.set_xlim(view.cx - view.half, view.cx + view.half)
-    ax.set_ylim(view.cy - view.half, view.cy + view.half)
-    ax.set_aspect("equal")
-    ax.tick_params(labelsize=7)
-    ax.set_xlabel("x (m)", fontsize=8)
+    fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
     title = f"{plan.scenario.name} on {plan.site} ({plan.kind.value})"
-    ax.set_title(f"{title}\n{plan.impact.type.value} crash at {plan.impact.time:.1f} s", fontsize=10)
-    fig.tight_layout()
+    impact = plan.impact
+    crash = f"{impact.type.value} crash at {impact.time:.1f} s: {impact.striker} strikes {impact.victim}"
+    fig.suptitle(f"{title}\n{crash}", fontsize=10)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", metadata={"Software": None})  # no version string in the bytes
     plt.close(fig)
     return buffer.getvalue()
 
 
-def _arrow(ax: Any, arrow: Any, box: Box, colour: str) -> None:
-    """The heading: from the body's centre forward, past its front."""
+def _arrow(ax: Any, arrow: Any, box: Box, size: float) -> None:
+    """The heading: from the body's centre forward, past its front (`size`: the head, in m, for the panel's scale)."""
     (fx, fy), _ = box.axes
     cx, cy = box.centre
-    reach = max(box.length / 2.0 + 1.5, 2.0)
-    ax.add_patch(arrow(cx, cy, fx * reach, fy * reach, width=0.15, head_width=0.9, head_length=0.9,
+    reach = box.length / 2.0 + 2.0 * size
+    ax.add_patch(arrow(cx, cy, fx * reach, fy * reach, width=size / 5.0, head_width=size, head_length=size,
                        length_includes_head=True, color="black", zorder=9))  # fmt: skip
 
 

@@ -92,14 +92,14 @@ def _rel(path: Path | str, out: Path) -> str:
 
 def _card(out: Path, plan: Plan | None, road_map: RoadMap | None, base: dict[str, Any]) -> Card:
     folder = base.pop("folder_path", None)
+    if folder is not None and Path(folder).is_dir():
+        base.update(folder=_rel(folder, out), files=_files(out, folder))
     if plan is None:
         return Card(**base)
     return Card(
         **base,
         kind=plan.kind.value,
         impact_s=round(plan.impact.time, 2),
-        folder=_rel(folder, out) if folder is not None else None,
-        files=_files(out, folder) if folder is not None else (),
         scene=scene(plan, road_map) if road_map is not None else None,
         crash=_crash(plan),
     )
@@ -160,7 +160,7 @@ def cards_from_rows(
             "map": row.get("map") or "",
             "verdicts": {t: str(row.get(t) or "-") for t in targets},
             "error": row.get("error"),
-            "folder_path": folder if plan is not None else None,
+            "folder_path": folder,
         }
         cards.append(_card(out, plan, road_map, base))
         if name not in infos or (not infos[name].provenance and plan is not None):

@@ -3,7 +3,8 @@
 The script plays each card's crash on its canvas from the scene JSON beside it
 (plan_picture.scene): lanes and lane lines, each body's corners every `step` seconds (the geometry
 kernel's, interpolated between frames), moving at the plan's time until impact, where they stop for a
-moment before the replay starts again. A slider scrubs; the button pauses. Each canvas records the
+moment before the replay starts again. A slider scrubs; the button pauses; `#t=SECONDS` (or
+`#t=impact`) in the address opens every animation paused at that moment. Each canvas records the
 frames it drew in `data-drawn`, and any script error is counted on the body (`data-errors`), so a
 test can read both from the page's DOM.
 """
@@ -34,7 +35,9 @@ tr.total th,tr.total td{font-weight:bold;background:#f7f7f7}
 .badge.pass{background:#e6f4ea;border-color:#137333}.badge.fail{background:#fce8e6;border-color:#b3261e}
 .badge.none{color:#666;border-color:#bbb}
 .views{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}
-.views img{border:1px solid #ddd;max-width:100%;height:auto}
+.views>a{flex:1 1 100%}
+.views img{border:1px solid #ddd;width:100%;height:auto}
+.anim-note{flex:1;font-size:12px;color:#444;min-width:200px}
 .anim{margin:0}
 .anim canvas{border:1px solid #ddd;display:block;max-width:100%}
 .anim figcaption{display:flex;gap:8px;align-items:center;font-size:12px;margin-top:4px}
@@ -70,8 +73,8 @@ SCRIPT = """
     this.last = null;
     this.drawn = 0;
     this.visible = true;
-    var v = scene.view;
-    this.scale = canvas.width / (2 * v[2]);
+    this.view = scene.view;
+    this.scale = canvas.width / (2 * scene.view[2]);
     canvas.setAttribute("data-frames", String(scene.actors.length ? scene.actors[0].boxes.length : 0));
     var self = this;
     this.play.addEventListener("click", function () {
@@ -88,7 +91,7 @@ SCRIPT = """
   }
 
   Player.prototype.px = function (x, y) {
-    var v = this.scene.view;
+    var v = this.view;
     return [(x - v[0] + v[2]) * this.scale, (v[1] + v[2] - y) * this.scale];
   };
 
@@ -113,8 +116,42 @@ SCRIPT = """
     return {corners: out, speed: actor.speeds[Math.round(f)]};
   };
 
+  Player.prototype.follow = function () {
+    // the camera frames the bodies and the impact point at this moment (never closer than 30 m
+    // across), so that bodies far apart at the start and touching at impact both read well
+    var s = this.scene, self = this;
+    var xs = [s.impact.x], ys = [s.impact.y];
+    s.actors.forEach(function (actor) {
+      var q = self.corners(actor).corners;
+      for (var i = 0; i + 1 < q.length; i += 2) { xs.push(q[i]); ys.push(q[i + 1]); }
+    });
+    var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
+    var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
+    var half = Math.max(x1 - x0, y1 - y0, 30) / 2 + 8;
+    this.view = [(x0 + x1) / 2, (y0 + y1) / 2, half];
+    this.scale = this.canvas.width / (2 * half);
+  };
+
+  Player.prototype.scaleBar = function () {
+    var ctx = this.ctx, c = this.canvas;
+    var metres = [5, 10, 20, 50, 100].filter(function (m) { return m * this.scale <= c.width / 4; }, this).pop() || 5;
+    var w = metres * this.scale, x = c.width - w - 12, y = c.height - 14;
+    ctx.fillStyle = "rgba(255,255,255,0.8)";
+    ctx.fillRect(x - 6, y - 16, w + 12, 24);
+    ctx.strokeStyle = "#111";
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.moveTo(x, y); ctx.lineTo(x + w, y);
+    ctx.stroke();
+    ctx.fillStyle = "#111";
+    ctx.font = "11px system-ui,sans-serif";
+    ctx.fillText(metres + " m", x, y - 5);
+    ctx.lineWidth = 1;
+  };
+
   Player.prototype.draw = function () {
     var s = this.scene, ctx = this.ctx, c = this.canvas, self = this;
+    this.follow();
     ctx.setLineDash([]);
     ctx.fillStyle = "#eef1e8";
     ctx.fillRect(0, 0, c.width, c.height);
@@ -163,10 +200,15 @@ SCRIPT = """
       ctx.lineWidth = 2;
       ctx.stroke();
       ctx.lineWidth = 1;
-      ctx.fillStyle = "#111";
       ctx.font = "bold 12px system-ui,sans-serif";
       var tag = actor.name + (actor.label === "other" ? "" : " (" + actor.label + ")");
-      ctx.fillText(tag + " " + Math.abs(now.speed).toFixed(0) + " km/h", a[0] + 8, a[1] - 8);
+      tag += " " + Math.abs(now.speed).toFixed(0) + " km/h";
+      var tx = Math.min(Math.max(a[0] + 8, 4), c.width - ctx.measureText(tag).width - 4);
+      var ty = Math.min(Math.max(a[1] - 8, 14), c.height - 4);
+      ctx.fillStyle = "rgba(255,255,255,0.75)";
+      ctx.fillRect(tx - 2, ty - 12, ctx.measureText(tag).width + 4, 16);
+      ctx.fillStyle = actor.colour;
+      ctx.fillText(tag, tx, ty);
     });
     if (hit) {
       ctx.strokeStyle = "#000";
@@ -180,6 +222,7 @@ SCRIPT = """
       ctx.font = "bold 16px system-ui,sans-serif";
       ctx.fillText("IMPACT", 10, 22);
     }
+    this.scaleBar();
     this.clock.textContent =
       "t = " + Math.min(this.time, s.impact.t).toFixed(1) + " s / impact " + s.impact.t.toFixed(1) + " s";
     this.scrub.value = String(Math.round(Math.min(this.time / (s.impact.t || 1), 1) * 1000));
@@ -197,6 +240,8 @@ SCRIPT = """
   };
 
   // only the canvases on screen play: a batch's page may hold hundreds
+  // report.html#t=4.5 (or #t=impact) opens every animation paused at that moment
+  var at = /[#&]t=([0-9.]+|impact)/.exec(window.location.hash);
   var players = [];
   var watch = "IntersectionObserver" in window ? new IntersectionObserver(function (entries) {
     entries.forEach(function (e) { e.target.player.visible = e.isIntersecting; });
@@ -204,6 +249,11 @@ SCRIPT = """
   document.querySelectorAll("canvas[data-scene]").forEach(function (canvas) {
     var p = new Player(canvas);
     canvas.player = p;
+    if (at) {
+      p.running = false;
+      p.play.textContent = "play";
+      p.time = at[1] === "impact" ? p.scene.impact.t : Math.min(Number(at[1]), p.scene.impact.t);
+    }
     p.draw();
     players.push(p);
     if (watch) watch.observe(canvas);

@@ -18,6 +18,12 @@ if TYPE_CHECKING:  # the package imports this module; the types are only for the
     from sovarc.compiler.report import Card, ScenarioInfo
 
 PICTURE = "plan.png"
+ANIMATION_NOTE = (
+    "The crash replayed from the plan's samples: each body as the plan places it, its heading line "
+    "from its centre through its front, its speed in its label. The view follows the bodies and stops "
+    "at impact (the collision area turns solid, the impact point is crossed), then starts again. "
+    "Drag the slider to scrub; the button pauses."
+)
 
 
 def esc(text: Any) -> str:
@@ -50,9 +56,9 @@ def render_page(title: str, targets: tuple[str, ...], infos: list[ScenarioInfo],
         f"<style>{STYLE}</style></head><body>",
         f"<header><h1>{esc(title)}</h1>",
         f"<p>{len(cards)} scenario-site(s) of {len(infos)} scenario(s), {planned} planned, on "
-        f"{esc(', '.join(maps) or 'no map')}; targets: {esc(', '.join(targets) or 'none')}.</p>",
-        '<p class="hint">Each card: the plan picture (left) and the crash replayed from the plan\'s samples '
-        "(right; the bodies stop at impact). Striker red, victim blue.</p></header>",
+        f"{esc(', '.join(_name(m) for m in maps) or 'no map')}; targets: {esc(', '.join(targets) or 'none')}.</p>",
+        '<p class="hint">Each card: the plan picture (the whole plan, and a close-up of the last seconds) '
+        "and the crash replayed from the plan's samples. Striker red, victim blue.</p></header>",
         summary_table(targets, cards),
         '<nav class="toc"><b>Scenarios:</b> '
         + " · ".join(f'<a href="#{esc(anchor(i.name))}">{esc(i.name)}</a>' for i in infos)
@@ -94,7 +100,7 @@ def _count(cards: list[Card], target: str) -> str:
 
 
 def scenario_section(info: ScenarioInfo, cards: list[Card], targets: tuple[str, ...], index: int) -> str:
-    sov = f'<a href="{href(info.sov)}">{esc(info.sov)}</a>' if info.sov else "<i>no .sov kept</i>"
+    sov = f'<a href="{href(info.sov)}">{esc(_name(info.sov))}</a>' if info.sov else "<i>no .sov kept</i>"
     prov = "".join(f"<dt>{esc(k)}</dt><dd>{esc(v)}</dd>" for k, v in info.provenance.items())
     body = "".join(card_html(c, targets, f"{index}-{k}") for k, c in enumerate(cards))
     return (
@@ -110,17 +116,17 @@ def card_html(card: Card, targets: tuple[str, ...], key: str) -> str:
     badges = "".join(_badge(card, t) for t in targets)
     head = (
         f"<header><h3>{esc(card.site or 'no site')}</h3>"
-        f'<p class="meta">{esc(card.kind)} · map <code>{esc(card.map or "-")}</code>'
+        f'<p class="meta">{esc(card.kind)} · map <code title="{esc(card.map)}">{esc(_name(card.map))}</code>'
         + (f" · impact at {card.impact_s:.2f} s" if card.impact_s is not None else "")
         + f'</p><p class="badges">{badges}</p>'
         + (f'<p class="crash">{esc(card.crash)}</p>' if card.crash else "")
         + "</header>"
     )
-    if card.folder is None:
+    if card.impact_s is None or card.folder is None:
         error = f'<p class="error">{esc(card.error or "not planned")}</p>'
-        return f'<article class="card failed" data-site="{esc(card.site)}">{head}{error}</article>'
+        return f'<article class="card failed" data-site="{esc(card.site)}">{head}{error}{_files(card)}</article>'
     picture = f"{card.folder}/{PICTURE}"
-    views = f'<a href="{href(picture)}"><img src="{href(picture)}" alt="plan of {esc(card.site)}" width="480"></a>'
+    views = f'<a href="{href(picture)}"><img src="{href(picture)}" alt="plan of {esc(card.site)}" width="1000"></a>'
     if card.scene is not None:
         views += (
             f'<figure class="anim"><canvas width="480" height="480" data-scene="scene-{esc(key)}"></canvas>'
@@ -128,13 +134,25 @@ def card_html(card: Card, targets: tuple[str, ...], key: str) -> str:
             '<input type="range" class="scrub" min="0" max="1000" value="0" aria-label="time">'
             '<span class="clock">0.0 s</span></figcaption></figure>'
             f'<script type="application/json" id="scene-{esc(key)}">{script_json(card.scene)}</script>'
+            f'<p class="anim-note">{ANIMATION_NOTE}</p>'
         )
-    files = "".join(f'<li><a href="{href(f)}">{esc(_short(f, card.folder))}</a></li>' for f in card.files)
-    summary = f"{len(card.files)} file(s) in <code>{esc(card.folder)}/</code>"
-    links = f'<details class="files"><summary>{summary}</summary><ul>{files}</ul></details>'
     note = f'<p class="error">{esc(card.error)}</p>' if card.error else ""
-    body = f'{head}<div class="views">{views}</div>{note}{links}'
+    body = f'{head}<div class="views">{views}</div>{note}{_files(card)}'
     return f'<article class="card" data-site="{esc(card.site)}">{body}</article>'
+
+
+def _files(card: Card) -> str:
+    """The site's files, each a link (folded: a target's folder holds many)."""
+    if card.folder is None:
+        return ""
+    folder = card.folder
+    items = "".join(f'<li><a href="{href(f)}">{esc(_short(f, folder))}</a></li>' for f in card.files)
+    summary = f"{len(card.files)} file(s) in <code>{esc(folder)}/</code>"
+    return f'<details class="files"><summary>{summary}</summary><ul>{items}</ul></details>'
+
+
+def _name(path: str) -> str:
+    return path.rsplit("/", 1)[-1]
 
 
 def _short(path: str, folder: str) -> str:

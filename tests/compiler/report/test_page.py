@@ -9,8 +9,13 @@ from pathlib import Path
 from urllib.parse import unquote
 
 import pytest
+from sovarc.compiler.batch import BatchOptions, run_batch
+from sovarc.compiler.batch.executors import LocalExecutor
 from sovarc.compiler.report import REPORT, Card, ScenarioInfo, write_report
 from sovarc.compiler.report.page import render_page, script_json
+
+from tests.compiler.batch.test_batch import TOWN, rules
+from tests.conftest import EXAMPLES
 
 HOSTILE = '<script>alert("x")</script>&amp;'
 
@@ -102,3 +107,22 @@ def test_same_cards_same_bytes(tmp_path: Path) -> None:
     first = write_report(tmp_path / "a", "t", ("sumo",), infos, _cards(3)).read_bytes()
     second = write_report(tmp_path / "b", "t", ("sumo",), infos, _cards(3)).read_bytes()
     assert first == second and b"<article" in first
+
+
+@pytest.mark.slow  # SUMO replays the good scenario
+def test_a_batch_report_has_a_card_per_manifest_row_and_links_the_kept_scenarios(tmp_path: Path) -> None:
+    bad = tmp_path / "broken.sov"
+    bad.write_text("scenario broken {\n  road { kind nowhere }\n}\n", encoding="utf-8")
+    good = EXAMPLES / "scenarios" / "straight_rear_end_stopped_traffic.sov"
+    out = tmp_path / "o"
+    executor = LocalExecutor(1)
+    try:
+        result = run_batch([str(bad), str(good)], BatchOptions(maps=(str(TOWN),), out=out, roads=2), executor, rules)
+    finally:
+        executor.close()
+    page = Page((out / REPORT).read_text(encoding="utf-8"))
+    assert len(page.all("article", "card")) == len(result.rows) == 3
+    assert len(page.all("article", "failed")) == 1 and len(page.all("canvas")) == 2
+    links = [a["href"] or "" for a in page.all("a") if not (a.get("href") or "#").startswith("#")]
+    assert all((out / unquote(h)).resolve().is_file() for h in links)
+    assert any(h.endswith("straight_rear_end_stopped_traffic.sov") for h in links)
