@@ -63,6 +63,6 @@ def test_the_report_opens_plays_and_shows_its_cards_in_chromium(run_out: Path, t
     assert console_errors(taken.stderr) == []
     if os.environ.get("SOVARC_REPORT_SCREENSHOT"):  # to look at it: the path to keep a copy at
         shutil.copyfile(shot, os.environ["SOVARC_REPORT_SCREENSHOT"])
-    colours = set(Image.open(shot).convert("RGB").getdata())
+    colours = {c for _, c in Image.open(shot).convert("RGB").getcolors(maxcolors=1 << 24) or []}
     for colour in (STRIKER, VICTIM):  # the bodies, in the pictures and on the canvases
         assert tuple(int(colour[k : k + 2], 16) for k in (1, 3, 5)) in colours, colour
