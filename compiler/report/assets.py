@@ -175,6 +175,7 @@ SCRIPT = """
     ctx.arc(ip[0], ip[1], s.impact.r * this.scale, 0, 2 * Math.PI);
     ctx.fillStyle = hit ? "rgba(255,204,0,0.75)" : "rgba(255,204,0,0.3)";
     ctx.fill();
+    var keys = [];
     s.actors.forEach(function (actor) {
       ctx.strokeStyle = actor.colour;
       ctx.globalAlpha = 0.5;
@@ -201,14 +202,25 @@ SCRIPT = """
       ctx.stroke();
       ctx.lineWidth = 1;
       ctx.font = "bold 12px system-ui,sans-serif";
-      var tag = actor.name + (actor.label === "other" ? "" : " (" + actor.label + ")");
-      tag += " " + Math.abs(now.speed).toFixed(0) + " km/h";
-      var tx = Math.min(Math.max(a[0] + 8, 4), c.width - ctx.measureText(tag).width - 4);
-      var ty = Math.min(Math.max(a[1] - 8, 14), c.height - 4);
+      // the name beside the body; role and speed in the key at the top left (labels of touching
+      // bodies would cover each other)
+      var tx = Math.min(Math.max(a[0] + 10, 4), c.width - 30);
+      var ty = Math.min(Math.max(a[1] - 10, 14), c.height - 4);
       ctx.fillStyle = "rgba(255,255,255,0.75)";
-      ctx.fillRect(tx - 2, ty - 12, ctx.measureText(tag).width + 4, 16);
+      ctx.fillRect(tx - 2, ty - 12, ctx.measureText(actor.name).width + 4, 16);
       ctx.fillStyle = actor.colour;
-      ctx.fillText(tag, tx, ty);
+      ctx.fillText(actor.name, tx, ty);
+      keys.push([actor, now.speed]);
+    });
+    ctx.font = "12px system-ui,sans-serif";
+    ctx.fillStyle = "rgba(255,255,255,0.85)";
+    ctx.fillRect(6, 6, 190, 8 + 18 * keys.length);
+    keys.forEach(function (k, i) {
+      var actor = k[0], role = actor.label === "other" ? "" : " " + actor.label;
+      ctx.fillStyle = actor.colour;
+      ctx.fillRect(12, 12 + 18 * i, 12, 12);
+      ctx.fillStyle = "#111";
+      ctx.fillText(actor.name + role + ", " + Math.abs(k[1]).toFixed(0) + " km/h", 30, 22 + 18 * i);
     });
     if (hit) {
       ctx.strokeStyle = "#000";
@@ -220,7 +232,7 @@ SCRIPT = """
       ctx.lineWidth = 1;
       ctx.fillStyle = "#b3261e";
       ctx.font = "bold 16px system-ui,sans-serif";
-      ctx.fillText("IMPACT", 10, 22);
+      ctx.fillText("IMPACT", c.width - 80, 24);
     }
     this.scaleBar();
     this.clock.textContent =

@@ -20,7 +20,7 @@ if TYPE_CHECKING:  # the package imports this module; the types are only for the
 PICTURE = "plan.png"
 ANIMATION_NOTE = (
     "The crash replayed from the plan's samples: each body as the plan places it, its heading line "
-    "from its centre through its front, its speed in its label. The view follows the bodies and stops "
+    "from its centre through its front; the key gives each one's role and speed. The view follows the bodies and stops "
     "at impact (the collision area turns solid, the impact point is crossed), then starts again. "
     "Drag the slider to scrub; the button pauses."
 )
