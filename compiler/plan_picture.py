@@ -27,7 +27,7 @@ from sovarc.compiler.plan import Plan, Trajectory
 STRIKER, VICTIM = "#d62728", "#1f77b4"
 OTHERS = ("#2ca02c", "#9467bd", "#ff7f0e", "#8c564b")
 GROUND, ASPHALT, WALKWAY = "#eef1e8", "#9aa0a6", "#d6d6d6"
-LINE, CENTRE_LINE = "#ffffff", "#f2c200"
+LINE, CENTRE_LINE, CROSSING = "#ffffff", "#f2c200", "#e4e4e4"
 AREA = "#ffcc00"
 FRAME_STEP = 0.1  # s between the animation's frames
 CLOSE_S = 2.0  # s before impact the close-up shows
@@ -53,7 +53,8 @@ class Lanes:
     """The lanes in a view: filled areas, and the lines painted on them."""
 
     asphalt: tuple[tuple[tuple[float, float], ...], ...]  # lane outlines, where vehicles drive
-    walkways: tuple[tuple[tuple[float, float], ...], ...]  # sidewalks and crossings
+    walkways: tuple[tuple[tuple[float, float], ...], ...]  # sidewalks and walking areas
+    crossings: tuple[tuple[tuple[float, float], ...], ...]  # pedestrian crossings, painted over the road
     lines: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]  # (style, shape): edge, divider, centre
 
 
@@ -91,7 +92,7 @@ def lanes_in(road_map: RoadMap, view: View) -> Lanes:
     """Each lane near the view as an outline; on a road (not a junction), its lane lines: a solid edge
     line at the right, dashed dividers between lanes of one direction, and at the left a centre line
     (yellow) where traffic comes the other way, else an edge line."""
-    asphalt, walkways, lines = [], [], []
+    asphalt, walkways, crossings, lines = [], [], [], []
     for edge in sorted(road_map.net.getEdges(withInternal=True), key=lambda e: e.getID()):
         lanes = edge.getLanes()
         if not any(view.near(lane.getShape()) for lane in lanes):
@@ -109,7 +110,10 @@ def lanes_in(road_map: RoadMap, view: View) -> Lanes:
             half = lane.getWidth() / 2.0
             left, right = centre.offset(-half).points, centre.offset(half).points
             outline = _shape([*left, *right[::-1]])
-            (walkways if _walkway(lane) else asphalt).append(outline)
+            if edge.getFunction() == "crossing":
+                crossings.append(outline)
+            else:
+                (walkways if _walkway(lane) else asphalt).append(outline)
             if internal or _walkway(lane):
                 continue
             if lane is driving[0]:
@@ -118,7 +122,7 @@ def lanes_in(road_map: RoadMap, view: View) -> Lanes:
                 lines.append(("centre" if opposite else "edge", _shape(left)))
             else:
                 lines.append(("divider", _shape(left)))
-    return Lanes(tuple(asphalt), tuple(walkways), tuple(lines))
+    return Lanes(tuple(asphalt), tuple(walkways), tuple(crossings), tuple(lines))
 
 
 def _walkway(lane: Any) -> bool:
@@ -182,6 +186,10 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
             ax.add_patch(Polygon(outline, closed=True, facecolor=WALKWAY, edgecolor=WALKWAY, linewidth=0.3, zorder=1))
         for outline in lanes.asphalt:
             ax.add_patch(Polygon(outline, closed=True, facecolor=ASPHALT, edgecolor=ASPHALT, linewidth=0.3, zorder=2))
+        for outline in lanes.crossings:
+            ax.add_patch(
+                Polygon(outline, closed=True, facecolor=CROSSING, edgecolor=LINE, linewidth=0, hatch="///", zorder=3)
+            )
         for style, shape in lanes.lines:
             xs, ys = zip(*shape, strict=True)
             colour = CENTRE_LINE if style == "centre" else LINE
@@ -292,6 +300,7 @@ def scene(plan: Plan, road_map: RoadMap) -> dict[str, Any]:
         "view": [_r(view.cx), _r(view.cy), _r(view.half)],
         "asphalt": [_flat(o) for o in lanes.asphalt],
         "walkways": [_flat(o) for o in lanes.walkways],
+        "crossings": [_flat(o) for o in lanes.crossings],
         "lines": [[style, _flat(shape)] for style, shape in lanes.lines],
         "impact": {
             "t": _r(plan.impact.time),

@@ -161,6 +161,8 @@ SCRIPT = """
     ctx.strokeStyle = "#9aa0a6";
     ctx.lineWidth = 0.5;
     s.asphalt.forEach(function (a) { self.path(a, true); ctx.fill(); ctx.stroke(); });
+    ctx.fillStyle = "rgba(240,240,240,0.8)";
+    s.crossings.forEach(function (w) { self.path(w, true); ctx.fill(); });
     ctx.lineWidth = 1;
     s.lines.forEach(function (l) {
       ctx.strokeStyle = l[0] === "centre" ? "#f2c200" : "#ffffff";
