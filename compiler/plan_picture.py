@@ -208,10 +208,9 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
                 ax.add_patch(
                     Polygon(box.corners(), facecolor=actor.colour, edgecolor=actor.colour, alpha=alpha, zorder=6)
                 )
-                if labelled or k % 2 == 0:
-                    ax.annotate(
-                        f"{time:g}", box.centre, fontsize=6, color="#222222", ha="center", va="center", zorder=7
-                    )
+                if labelled or k % 2 == 0:  # the close-up counts back from impact: its times need not be round
+                    text = f"-{round(plan.impact.time - time, 1):g}" if labelled else f"{time:g}"
+                    ax.annotate(text, box.centre, fontsize=6, color="#222222", ha="center", va="center", zorder=7)
             box = body_at(t, plan.impact.time)
             ax.add_patch(Polygon(box.corners(), facecolor=actor.colour, edgecolor="black", linewidth=0.8, zorder=8))
             _arrow(ax, FancyArrow, box, shown.half / 40.0)
@@ -226,12 +225,12 @@ def draw_plan(plan: Plan, road_map: RoadMap) -> bytes:
     whole.add_patch(Rectangle((close.cx - close.half, close.cy - close.half), 2 * close.half, 2 * close.half,
                               fill=False, edgecolor="black", linestyle="--", linewidth=0.8, zorder=12))  # fmt: skip
     whole.set_title(f"whole plan (m): bodies at {', '.join(f'{g:g}' for g in ghost_times(plan))} s", fontsize=9)
-    near.set_title(f"close-up (m): the last {CLOSE_S:g} s, every 0.5 s, and at impact", fontsize=9)
+    near.set_title(f"close-up (m): bodies every 0.5 s over the last {CLOSE_S:g} s (label: s before impact)", fontsize=9)
     handles = [Patch(facecolor=a.colour, edgecolor="black", label=_legend_name(a)) for a in actors] + [
         Patch(facecolor=AREA, alpha=0.55, edgecolor="#b38f00", label=f"collision area (r {plan.impact.radius:.1f} m)"),
         Line2D([], [], marker="x", color="black", linestyle="none", markeredgewidth=2, label="impact point"),
         Line2D([], [], color="black", marker=">", markersize=5, label="heading at impact"),
-        Patch(facecolor="#888888", alpha=0.3, label="body earlier (label: time, s)"),
+        Patch(facecolor="#888888", alpha=0.3, label="body earlier (label: time)"),
         Line2D([], [], color="#555555", marker="o", markersize=4, label="path from its start"),
     ]
     fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
