@@ -9,7 +9,8 @@
    (slots.py), in the search's order; splitting them would change which spare fills which slot.
 3. Run: the tasks a previous run did not finish go to the executor (executors.py: a process pool by
    default, or Ray); a progress bar with ETA counts them.
-4. Record: `manifest.csv` / `manifest.json`, one row per scenario-site, in input order.
+4. Record: `manifest.csv` / `manifest.json`, one row per scenario-site, in input order, and
+   `report.html` (compiler/report) for a person to look at.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from sovarc.compiler.batch.tasks import Task, clear_unfinished, finished, run_ta
 from sovarc.compiler.frontend import FrontEnd, scenario_name
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.maps import load_map
+from sovarc.compiler.report import write_batch_report
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import first_message
 from sovarc.dsl import read_source, to_text, verify_or_raise
@@ -133,4 +135,5 @@ def run_batch(
         by_input[failure["input"]] = rows_of(failure, options.targets, "")
     rows = [row for name in inputs for row in by_input.get(name, [])]
     manifest = write_manifest(options.out, rows, options.targets)
+    write_batch_report(options.out, rows, options.targets)
     return BatchResult(rows, ran, len(tasks) - ran, len(failures), manifest)

@@ -12,6 +12,7 @@ import sovarc.targets.registry as registry
 from sovarc.compiler.cli.common import front_end_options
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import PIPELINE, STAGE_NAMES, Options, Sites, Slots, Stage, entry_stage, run_pipeline
+from sovarc.compiler.report import write_run_report
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import passed
 from sovarc.dsl import read_source
@@ -59,6 +60,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     last = PIPELINE[STAGE_NAMES.index(stop)]
     if options.out_dir is not None:
         _print_record(last.render(value), options.out_dir)
+        if options.targets and isinstance(value, Slots):
+            write_run_report(options.out_dir, value.results, options.targets, args.input)
         print(f"written to {options.out_dir}/", file=sys.stderr)
         return _exit_code(value)
     if isinstance(value, Slots):
