@@ -128,6 +128,9 @@ _INTENT = re.compile(
     r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b[^.,;]*)",
     re.I,
 )
+# A state said before another party's name qualifies that party, not the one the piece is about: "V2 made
+# contact with the rear of the stationary V1", "as V2 passed the parked V1".
+_QUALIFIED = re.compile(r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$)", re.I)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
@@ -143,6 +146,7 @@ _DESCRIBED = re.compile(
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
     re.I,
 )
+_MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
@@ -156,6 +160,7 @@ def what_was_done(text: str) -> str:
         return m.group(0) if keep else m.group("lead")
 
     text = _EVASIVE.sub(" ", text)
+    text = _QUALIFIED.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
     return _INTENT.sub(intent, text)
 
@@ -223,8 +228,10 @@ def read_actions(
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
     `struck_first` says whether its front made the impact."""
-    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
-        return UNKNOWN
+    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known,
+        # unless its front made the impact and it is said to be moving ("V2 following behind V1 struck ...")
+        moving = any(_MOVING_STRIKER.search(p.text) for p in pieces)
+        return (Action(ActionKind.FOLLOW_LANE),) if struck_first and moving else UNKNOWN
     found = _found(pieces, road, heading)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)

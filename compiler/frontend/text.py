@@ -133,9 +133,18 @@ def describes_impact(sentence: str) -> bool:
     return bool(_IMPACT.search(cleaned) and re.search(r"\b[VP]\d\b", sentence))
 
 
+# A summary only names the parties ("V1 ... was in a collision involving V2 on [XXX]"); the impact is where the
+# report describes the contact, so the summary is the impact only when no sentence describes one.
+_SUMMARY = re.compile(
+    r"\b(?:was|were) (?:in|involved in) an? (?:\w+ )?(?:collision|crash|incident)\b|\bcollision involving\b", re.I
+)
+
+
 def first_impact(sents: list[str]) -> int:
-    """The index of the first sentence that describes an impact, or -1."""
-    return next((i for i, s in enumerate(sents) if describes_impact(s)), -1)
+    """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1."""
+    found = [i for i, s in enumerate(sents) if describes_impact(s)]
+    described = [i for i in found if not _SUMMARY.search(sents[i])]
+    return (described or found or [-1])[0]
 
 
 def up_to_first_impact(sents: list[str]) -> list[str]:
