@@ -97,6 +97,20 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
+    # Moving off again after a stop: it drives along its lane ("began to move forward", "proceeded forward").
+    (
+        ActionKind.FOLLOW_LANE,
+        re.compile(
+            r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
+            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b",
+            re.I,
+        ),
+    ),
+    # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
+    (
+        ActionKind.RETROGRADE,
+        re.compile(r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I),
+    ),
 ]
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
