@@ -336,6 +336,8 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
                 crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
             continue
         actions = read_actions(early, kind, heading, crash.striker == pid)
+        if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
+            actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
             actions = (*actions, Action(ActionKind.RETROGRADE))
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
