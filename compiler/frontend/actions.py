@@ -106,10 +106,18 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
+    # Around another road user, to one side: "maneuvered around the left side of V1", "steered around V1 using
+    # the left turn lane": a lane change to the side it names
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer)\w* (?:\w+ )?around\b", re.I),
+    ),
     # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
     (
         ActionKind.RETROGRADE,
-        re.compile(r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I),
+        re.compile(
+            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I
+        ),
     ),
 ]
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
@@ -252,6 +260,12 @@ def read_actions(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found.sort(key=lambda item: item[0])
+    # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS)
+    found = [
+        (at, a)
+        for i, (at, a) in enumerate(found)
+        if a.kind is not ActionKind.FOLLOW_LANE or (i > 0 and found[i - 1][1].kind is ActionKind.STOP)
+    ]
     if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
         # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
         found = [(at, a) for at, a in found if at >= entered[0] or a.kind is ActionKind.STOP]
