@@ -282,6 +282,24 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
+# A vehicle the impact sentence says stood still when it was hit: "the stationary V1", "while V1 remained
+# stopped". Its front may have met the other (a car reversing into it), but it had not moved off.
+_STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
+
+
+def _still_at_impact(sentence: str, pid: str) -> bool:
+    return bool(
+        re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
+        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
+    )
+
+
+def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
+    """The actions up to the last stop, or with a stop added."""
+    stops = [i for i, a in enumerate(actions) if a.kind is ActionKind.STOP]
+    return actions[: stops[-1] + 1] if stops else (*actions, Action(ActionKind.STOP))
+
+
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
     named = prepare(text)
@@ -336,6 +354,8 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
                 crash = replace(crash, type=CrashType.SIDE)  # one crossing the road is struck from its side
             continue
         actions = read_actions(early, kind, heading, crash.striker == pid)
+        if isinstance(actions, tuple) and impact >= 0 and _still_at_impact(sents[impact], pid):
+            actions = _ending_stopped(actions)
         if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
             actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
