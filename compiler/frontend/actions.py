@@ -92,7 +92,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.STOP,
         re.compile(
             r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
-            r"|\bmade a (?:complete |full )?stop\b|\b(?:slow|brak|decelerat)\w*(?: down)? to a (?:complete |full |near )?stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
+            r"|\bmade a (?:complete |full )?stop\b"
+            r"|\b(?:slow|brak|decelerat)\w*(?: down)? to a (?:complete |full |near )?stop\b"
+            r"|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b",
             re.I,
         ),

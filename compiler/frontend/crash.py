@@ -41,10 +41,15 @@ _OWNED = [
 # "with its front", "its front was struck", "contacting it's front to": the clause's subject.
 _OWN_PART = re.compile(
     # (not "made contact with the front of V1": that part is the object's)
-    r"\b(?:with|using) (?:its |his |her |it's |the )?(?P<part>" + _PART + r")\b(?![- ](?:" + _WORD + r"|of)\b)"
+    # nor "made contact with its front": "with" that a contact verb takes names the object
+    r"(?<!contact )(?<!collided )(?<!collision )\b(?:with|using) (?:its |his |her |it's |the )?(?P<part>"
+    + _PART
+    + r")\b"
+    r"(?![- ](?:" + _WORD + r"|of)\b)"
     r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
     re.I,
 )
+_OBJECT_ITS = re.compile(r"\b(?:contact|collided|collision) with (?:its|his|her|it's) (?P<part>" + _PART + r")\b", re.I)
 _AGENT = re.compile(
     r"\b(?:struck|hit|impacted|contacted|rear-ended)\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
     r"(?P<v>" + _V + r")\b",
@@ -100,6 +105,12 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
         kind = _kind(m.group("part") or m.group("part2"))
         if subject is not None and kind is not None:
             parts.append((m.start(), subject, kind))
+    for m in _OBJECT_ITS.finditer(sentence):
+        # "V2 ... made contact with its front passenger side": "its" is the other one named, not the subject
+        before = _names(sentence[: m.start()])
+        owner = next((n for n in _names(sentence) if before and n != before[-1]), None)
+        if owner is not None and (kind := _kind(m.group("part"))) is not None:
+            parts.append((m.start("part"), owner, kind))
     return sorted(set(parts))
 
 

@@ -16,7 +16,14 @@ from dataclasses import replace
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash
-from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
+from sovarc.compiler.frontend.text import (
+    describes_impact,
+    first_impact,
+    impact_clause,
+    participants,
+    prepare,
+    sentences,
+)
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -50,7 +57,11 @@ _WEATHER = [
     (Weather.WINDY, r"\bwindy\b|\bwinds? (?:was|were)\b|\bhigh winds?\b"),
     (Weather.SUNNY, r"\bsunny\b"),
 ]
-_DARK = r"\bdark(?:ness)?\b|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+# "A dark colored Nissan", "a dark gray SUV": a colour of a vehicle, not the scene's lighting.
+_DARK = (
+    r"\bdark(?:ness)?\b(?![- ](?:colou?red|gr[ae]y|blue|green|red|brown|silver|tinted|painted|sedan|suv|car))"
+    r"|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+)
 _LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
 _DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
 _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
@@ -317,7 +328,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
             carry,
             crash.striker,
             crash.victim,
-            *re.findall(r"\bP\d\b", " ".join(filter(describes_impact, sents))),
+            *(p for s in filter(describes_impact, sents) for p in re.findall(r"\bP\d\b", impact_clause(s))),
         }
         ids = [pid for pid in ids if pid.startswith("V") or pid in involved]
     parts = pieces(sents, ids)

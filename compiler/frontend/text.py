@@ -140,6 +140,17 @@ _SUMMARY = re.compile(
 )
 
 
+# Where a sentence's clauses part: "V1 was yielding to P1 crossing the street | when V2 made contact with V1".
+_CLAUSE = re.compile(r",? \b(?:when|while|as|after|before|because|and then)\b |[,;] ", re.I)
+
+
+def impact_clause(sentence: str) -> str:
+    """The clauses of a sentence that say participants met; the whole sentence when none does alone. A road
+    user named only in another clause ("yielding to P1 crossing") is a bystander to this impact."""
+    clauses = [c for c in _CLAUSE.split(sentence) if describes_impact(c)]
+    return " ".join(clauses) if clauses else sentence
+
+
 def first_impact(sents: list[str]) -> int:
     """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1."""
     found = [i for i, s in enumerate(sents) if describes_impact(s)]
