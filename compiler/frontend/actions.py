@@ -167,7 +167,8 @@ _TRAVELLING = re.compile(
 # What shows the report describing a participant: what it was ("V2, a 2000 Honda"), where it went or how.
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
-    r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
+    r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b",
     re.I,
 )
 _MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
