@@ -280,6 +280,10 @@ class HalfScore:
     refusals: list[tuple[str, str]] = field(default_factory=list)
     tallies: dict[str, Tally] = field(default_factory=lambda: {a: Tally() for a in ATTRIBUTES})
 
+    def no_crash(self) -> int:
+        """Refusals because the narrative describes no crash."""
+        return sum("describes no crash" in why for _, why in self.refusals)
+
     def add(self, report_id: str, row: dict[str, str], got: Scenario | None, refusal: str = "") -> None:
         self.reports += 1
         if got is None:
@@ -332,6 +336,10 @@ def table(scores: dict[str, HalfScore]) -> str:
     names = list(scores)
     lines = [f"{'attribute':<16}" + "".join(f"{n:>36}" for n in names)]
     lines.append(f"{'extracted':<16}" + "".join(f"{_cell(s.extracted, s.reports):>36}" for s in scores.values()))
+    # GM's duplicate filings of Cruise reports are boilerplate whose crash description is cut off: refusing a
+    # narrative that describes no crash is right, so the share among those that describe one is shown too
+    said = [(s.extracted, s.reports - s.no_crash()) for s in scores.values()]
+    lines.append(f"{'  crash said':<16}" + "".join(f"{_cell(e, n):>36}" for e, n in said))
     lines.append(
         f"{'two participants':<16}" + "".join(f"{_cell(s.two_parties, s.extracted):>36}" for s in scores.values())
     )
