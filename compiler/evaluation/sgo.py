@@ -37,6 +37,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from sovarc.compiler.frontend.refusals import says_impact
 from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Participant, Scenario, Speed, Unknown, Weather
 
 # Crash partners the IR holds as road users, so the crash has two parties.
@@ -278,11 +279,12 @@ class HalfScore:
     extracted: int = 0
     two_parties: int = 0
     refusals: list[tuple[str, str]] = field(default_factory=list)
+    silent: int = 0  # refused narratives that say no impact in any words
     tallies: dict[str, Tally] = field(default_factory=lambda: {a: Tally() for a in ATTRIBUTES})
 
     def no_crash(self) -> int:
-        """Refusals because the narrative describes no crash."""
-        return sum("describes no crash" in why for _, why in self.refusals)
+        """Refusals of narratives that say no impact at all."""
+        return self.silent
 
     def add(self, report_id: str, row: dict[str, str], got: Scenario | None, refusal: str = "") -> None:
         self.reports += 1
@@ -321,6 +323,7 @@ def score_rows(rows: Iterable[dict[str, str]], read: Callable[[str, str], Scenar
             got = read(row["Report ID"], row["Narrative"])
         except Exception as exc:  # a refusal or an internal error: both count as not extracted, with the reason
             score.add(row["Report ID"], row, None, f"{type(exc).__name__}: {exc}")
+            score.silent += not says_impact(row["Narrative"])
             continue
         score.add(row["Report ID"], row, got)
     return score

@@ -177,6 +177,11 @@ def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
     if _FROM_BEHIND.search(sentence):
         return Crash(CrashType.REAR_END, striker, victim)
     kind = CrashType.FRONTAL if head_on else _said_part(sentence)
+    # "V2 ... made contact with the front of V1": V2 came across V1's path, so V1's front met its side
+    hit = _ACTIVE.search(sentence)
+    only_front = parts and all(w == striker and k is CrashType.FRONTAL for _, w, k in parts)
+    if kind is None and hit and only_front and all(at > hit.end() for at, _, _ in parts):
+        kind = CrashType.SIDE
     if kind is None and "rear-ended" in sentence.lower():
         kind = CrashType.REAR_END
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)

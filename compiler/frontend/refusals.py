@@ -45,7 +45,9 @@ def refuse(text: str, name: str) -> None:
             f"{name}: the report describes several crashes ('{m.group()}'); a scenario holds one crash: give "
             "each crash its own report; nothing to extract"
         )
-    if first_impact(sentences(prepare(text))) < 0 and not _says_impact(text):
+    named = prepare(text)
+    # (a text that names no road user at all gets the front end's own refusal, which says what it looked for)
+    if re.search(r"\b[VP]\d\b", named) and first_impact(sentences(named)) < 0 and not says_impact(text):
         raise FrontEndError(
             f"{name}: the report describes no crash: no sentence says that road users met (struck, collided, "
             "made contact, ...); nothing to extract"
@@ -71,7 +73,7 @@ _AVOIDED = re.compile(
 )
 
 
-def _says_impact(text: str) -> bool:
+def says_impact(text: str) -> bool:
     """Whether any sentence says road users met, in words the rules may not read (their refusal then says
     more than "no crash" could)."""
     return any(_IMPACT_WORD.search(_AVOIDED.sub(" ", s)) for s in sentences(text))

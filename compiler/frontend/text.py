@@ -26,7 +26,8 @@ _IMPACT = re.compile(
 _NO_IMPACT = re.compile(
     r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:collision|impact|contact|crash|striking|hitting)\b"
-    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b",  # the scene, not the participants meeting
+    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
+    r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b",  # what held then, not the meeting
     re.IGNORECASE,
 )
 
@@ -151,10 +152,14 @@ def impact_clause(sentence: str) -> str:
     return " ".join(clauses) if clauses else sentence
 
 
+# A summary run together with the description (no full stop between them) still describes the contact.
+_MET = re.compile(r"\b(?:struck|strikes|hit|rear-ended|collided with|ma(?:de|king) contact)\b", re.I)
+
+
 def first_impact(sents: list[str]) -> int:
     """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1."""
     found = [i for i, s in enumerate(sents) if describes_impact(s)]
-    described = [i for i in found if not _SUMMARY.search(sents[i])]
+    described = [i for i in found if not _SUMMARY.search(sents[i]) or _MET.search(sents[i])]
     return (described or found or [-1])[0]
 
 
