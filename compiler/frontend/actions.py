@@ -104,7 +104,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.FOLLOW_LANE,
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b",
+            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
+            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b",
             re.I,
         ),
     ),
@@ -263,11 +264,17 @@ def read_actions(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found.sort(key=lambda item: item[0])
-    # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS)
+    # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
+    # did nothing else next: moving off into a turn is the turn
     found = [
         (at, a)
         for i, (at, a) in enumerate(found)
-        if a.kind is not ActionKind.FOLLOW_LANE or (i > 0 and found[i - 1][1].kind is ActionKind.STOP)
+        if a.kind is not ActionKind.FOLLOW_LANE
+        or (
+            i > 0
+            and found[i - 1][1].kind is ActionKind.STOP
+            and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
+        )
     ]
     if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
         # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
