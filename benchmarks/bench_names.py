@@ -18,51 +18,22 @@ Then the NMVCCS figures `sovarc eval extraction --llm none` prints on the 90 lab
 from __future__ import annotations
 
 import argparse
-import csv
-import hashlib
 import re
 from pathlib import Path
 
 from sovarc.compiler.evaluation.extraction import Report
+from sovarc.compiler.evaluation.sgo import held_out, read_pool
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import read_source
 from sovarc.dsl.span import Source
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data"
-TWO_PARTY = frozenset(
-    (
-        "Passenger Car",
-        "SUV",
-        "Pickup Truck",
-        "Heavy Truck",
-        "Van",
-        "Bus",
-        "Motorcycle",
-        "First Responder Vehicle",
-        "Non-Motorist: Pedestrian",
-    )
-)
 
 
 def sgo_pool(path: Path) -> dict[str, dict[str, str]]:
-    """Two-party rows with a readable narrative, the latest version per Report ID."""
-    latest: dict[str, dict[str, str]] = {}
-    with path.open(encoding="utf-8", newline="") as f:
-        for row in csv.DictReader(f):
-            text = row["Narrative"] or ""
-            if row["Crash With"] not in TWO_PARTY or row["Narrative - CBI?"] == "Y":
-                continue
-            if "[REDACTED" in text.upper() or len(text.strip()) < 100:
-                continue
-            old = latest.get(row["Report ID"])
-            if old is None or int(row["Report Version"] or 0) > int(old["Report Version"] or 0):
-                latest[row["Report ID"]] = row
-    return latest
-
-
-def held_out(report_id: str) -> bool:
-    return hashlib.sha256(report_id.encode("utf-8")).digest()[0] % 2 == 1
+    """Two-party rows with a readable narrative, the latest version per Report ID (see evaluation.sgo)."""
+    return read_pool(path)
 
 
 _IMPACT = re.compile(r"\b(?:struck|strik\w+|impact\w*|contact\w*|collid\w+|hit|rear[- ]end\w*)\b", re.I)

@@ -6,23 +6,29 @@ The evaluations themselves are in sovarc.compiler.evaluation.
 from __future__ import annotations
 
 import argparse
+import hashlib
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.cli.batch import executor_of
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
+from sovarc.compiler.evaluation import sgo
 from sovarc.compiler.evaluation.extraction import evaluate_extraction
 from sovarc.compiler.evaluation.srr import SrrTask, map_key, run_srr_task, sov_files, srr_table
 from sovarc.compiler.evaluation.tests import TestsTable, TestsTask, load_ego, merged, run_tests_task, scenario_files
+from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import default_map
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import folder_name
 from sovarc.dsl import verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
+from sovarc.dsl.ir import Scenario
+from sovarc.dsl.span import Source
 from tqdm import tqdm
 
 
@@ -36,6 +42,10 @@ def cmd_eval(args: argparse.Namespace) -> int:
 
 def cmd_eval_extraction(args: argparse.Namespace) -> int:
     """Extraction accuracy per attribute (the paper's Table 3), then the failing cases and fields."""
+    if args.format == "sgo":
+        return cmd_eval_sgo(args)
+    if args.csv or not args.reports or not args.truth:
+        raise UsageError("eval extraction needs --reports DIR and --truth DIR (or --format sgo CSV)")
     truths = sorted(Path(args.truth).glob("*/*.json"))
     if not truths:
         raise UsageError(f"no ground truth found: expected {args.truth}/<category>/<n>.json")
@@ -59,6 +69,35 @@ def cmd_eval_extraction(args: argparse.Namespace) -> int:
             for case, attribute, why in failures:
                 print(f"  {case:<14} {attribute:<18} {why}")
     return EXIT_INPUT if reporter.failed else EXIT_OK
+
+
+def cmd_eval_sgo(args: argparse.Namespace) -> int:
+    """SGO narratives scored on NHTSA's coded fields, the development half beside the held-out half."""
+    if not args.csv or args.reports or args.truth:
+        raise UsageError("eval extraction --format sgo takes the SGO incident CSV, and no --reports or --truth")
+    path = Path(args.csv)
+    if not path.is_file():
+        raise UsageError(f"{path}: no such file")
+    halves = sgo.halves(sgo.read_pool(path))
+    if args.sample is not None:  # a slow front end reads a sample of the held-out half only
+        by_hash = sorted(halves["held-out"], key=lambda r: hashlib.sha256(r["Report ID"].encode()).hexdigest())
+        halves = {"held-out": by_hash[: args.sample]}
+    front_end = make_front_end(args)
+
+    def read(front: FrontEnd) -> Callable[[str, str], Scenario]:
+        return lambda report_id, text: front.extract(Source(f"sgo_{report_id}.txt", text)).scenario
+
+    scores = {}
+    for name, rows in halves.items():
+        scores[name] = sgo.score_rows(tqdm(rows, desc=f"sgo {name}", unit="report", disable=None), read(front_end))
+    front_end.close()
+    if args.json:
+        print(json.dumps(sgo.to_json(scores), indent=2, ensure_ascii=False))
+        return EXIT_OK
+    sizes = ", ".join(f"{name} {s.reports}" for name, s in scores.items())
+    print(f"SGO two-party narratives scored on NHTSA's coded fields ({sizes}), front end --llm {args.llm}\n")
+    print(sgo.table(scores))
+    return EXIT_OK
 
 
 def cmd_eval_srr(args: argparse.Namespace) -> int:

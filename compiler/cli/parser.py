@@ -288,10 +288,26 @@ def build_parser() -> argparse.ArgumentParser:
         help="extraction accuracy per attribute",
         description="Extract every report that has ground truth (truth/<category>/<n>.json\n"
         "beside reports/<category>/<n>.txt) and print the accuracy per attribute\n"
-        "in the form of the paper's Table 3, then the failing cases and fields.",
+        "in the form of the paper's Table 3, then the failing cases and fields.\n"
+        "With --format sgo CSV: the SGO narratives' reading, scored on NHTSA's coded fields.",
     )
-    exv.add_argument("--reports", required=True, help="folder of <category>/<n>.txt reports")
-    exv.add_argument("--truth", required=True, help="folder of <category>/<n>.json ground truth")
+    exv.add_argument(
+        "--format",
+        choices=("nmvccs", "sgo"),
+        default="nmvccs",
+        help="nmvccs: --reports and --truth folders (default); sgo: NHTSA's SGO incident CSV, scored on its "
+        "coded fields, development half beside held-out half",
+    )
+    exv.add_argument("csv", nargs="?", help="the SGO incident CSV (with --format sgo)")
+    exv.add_argument("--reports", help="folder of <category>/<n>.txt reports")
+    exv.add_argument("--truth", help="folder of <category>/<n>.json ground truth")
+    exv.add_argument(
+        "--sample",
+        type=_not_negative,
+        metavar="N",
+        help="with --format sgo: score only N held-out reports (the first by sha256 of the Report ID), for a "
+        "slow front end",
+    )
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     add_llm_options(exv)
     _add_srr_parser(which, _formatter)

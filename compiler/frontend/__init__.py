@@ -31,6 +31,7 @@ from sovarc.compiler.frontend.hybrid import model_reading
 from sovarc.compiler.frontend.names import partner_refusal
 from sovarc.compiler.frontend.providers import make_provider
 from sovarc.compiler.frontend.providers.base import Provider
+from sovarc.compiler.frontend.refusals import refuse
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import check_narrative, naming_note, number_vehicles, unrepresented
 from sovarc.dsl import Scenario
@@ -88,6 +89,7 @@ class FrontEnd:
 
     def extract(self, source: Source) -> Extraction:
         check_narrative(source.text, source.name)
+        refuse(source.text, source.name)
         if refusal := partner_refusal(number_vehicles(source.text)):
             raise FrontEndError(f"{source.name}: {refusal}; nothing to extract")
         rules = extract(source.text, scenario_name(source.name), source.name)

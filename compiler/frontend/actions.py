@@ -99,9 +99,32 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
+            r"|\bto a (?:complete |full |sudden |quick |near )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
+        ),
+    ),
+    # Moving off again after a stop: it drives along its lane ("began to move forward", "proceeded forward").
+    (
+        ActionKind.FOLLOW_LANE,
+        re.compile(
+            r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
+            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
+            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b",
+            re.I,
+        ),
+    ),
+    # Around another road user, to one side: "maneuvered around the left side of V1", "steered around V1 using
+    # the left turn lane": a lane change to the side it names
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer)\w* (?:\w+ )?around\b", re.I),
+    ),
+    # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
+    (
+        ActionKind.RETROGRADE,
+        re.compile(
+            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I
         ),
     ),
 ]
@@ -155,6 +178,9 @@ _PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
 _INTO_PLACE = re.compile(
     r"\b(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,3}?(?:drive(?:way)?|lot|street|road|alley|entrance)", re.I
 )
+# A state said before another party's name qualifies that party, not the one the piece is about: "V2 made
+# contact with the rear of the stationary V1", "as V2 passed the parked V1".
+_QUALIFIED = re.compile(r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$)", re.I)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
 # "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
@@ -172,10 +198,12 @@ _TRAVELLING = re.compile(
 # What shows the report describing a participant: what it was ("V2, a 2000 Honda"), where it went or how.
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
-    r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull",
+    r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
+_MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
 _TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
@@ -191,6 +219,7 @@ def what_was_done(text: str) -> str:
 
     text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
+    text = _QUALIFIED.sub(" ", text)
     text = _INTENDED_MOVE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
@@ -316,7 +345,11 @@ def read_actions_at(
 ) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
-    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known
+    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known,
+        # unless its front made the impact and it is said to be moving ("V2 following behind V1 struck ...")
+        moving = next((p.at + m.start() for p in pieces if (m := _MOVING_STRIKER.search(p.text))), None)
+        if struck_first and moving is not None:
+            return (Action(ActionKind.FOLLOW_LANE),), (moving,)
         return UNKNOWN, ()
     plan = _planned_turn(pieces, road) if side_impact else None
     found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
@@ -325,6 +358,18 @@ def read_actions_at(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found.sort(key=lambda item: item[0])
+    # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
+    # did nothing else next: moving off into a turn is the turn
+    found = [
+        (at, a)
+        for i, (at, a) in enumerate(found)
+        if a.kind is not ActionKind.FOLLOW_LANE
+        or (
+            i > 0
+            and found[i - 1][1].kind is ActionKind.STOP
+            and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
+        )
+    ]
     if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
         # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
         found = [(at, a) for at, a in found if at >= entered[0] or a.kind is ActionKind.STOP]

@@ -19,10 +19,16 @@ from dataclasses import dataclass
 _OBJECT_BEFORE = re.compile(
     r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|toward|towards|into|past|struck|hit|impacted|contacted|"
     r"striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|pass|passed|passing|"
-    r"followed|following)|'s) (?:the )?$",
+    r"followed|following)|'s) (?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
     re.IGNORECASE,
 )
-_SUBJECT_OF = re.compile(r"\b(?:driver|operator|occupant)s? of (?:the )?$", re.IGNORECASE)
+_SUBJECT_OF = re.compile(
+    r"\b(?:driver|operator|occupant)s? of (?:the )?$"
+    # a part in subject position is its vehicle acting: "..., the front driver side of V2 made contact with"
+    r"|(?:^|[,;] |\b(?:when|while|then|as) )(?:the|its) (?:[\w-]+ ){0,3}(?:front|rear|side|bumper|corner|end)"
+    r" of (?:the )?$",
+    re.IGNORECASE,
+)
 # Other road users: what follows them, up to the next participant, is not a participant's doing.
 _OTHER = re.compile(
     r"\b(?:an?|another|the|other|one|several)\s+(?:(?:non-?contact|uninvolved|other|third|emergency|unknown|"

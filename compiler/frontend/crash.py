@@ -22,11 +22,15 @@ _WORD = (
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
 _STRIKE = (
     r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-ended"
-    r"|ran into|crashed into|made contact (?:with|to))"
+    r"|ran into|crashed into|(?:made|make|makes|making) contact (?:with|to))"
 )
+# "the rear of the stationary V1": a state said of the owner
+_STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
 _OWNED = [
     # the front of V2 (but not "in front of V1")
-    re.compile(r"(?<!\bin )(?<!\bin the )\b(?P<part>" + _PART + r") of (?:the )?(?P<v>" + _V + r")\b", re.I),
+    re.compile(
+        r"(?<!\bin )(?<!\bin the )\b(?P<part>" + _PART + r") of (?:the )?" + _STATE + r"(?P<v>" + _V + r")\b", re.I
+    ),
     re.compile(r"\b(?P<v>" + _V + r")'s (?P<part>" + _PART + r")\b", re.I),  # V2's rear
     # V2 in the left side, V1 was struck on the right side
     re.compile(
@@ -36,10 +40,16 @@ _OWNED = [
 ]
 # "with its front", "its front was struck", "contacting it's front to": the clause's subject.
 _OWN_PART = re.compile(
-    r"\b(?:with|using) (?:its |his |her |it's |the )?(?P<part>" + _PART + r")\b"
+    # (not "made contact with the front of V1": that part is the object's)
+    # nor "made contact with its front": "with" that a contact verb takes names the object
+    r"(?<!contact )(?<!collided )(?<!collision )\b(?:with|using) (?:its |his |her |it's |the )?(?P<part>"
+    + _PART
+    + r")\b"
+    r"(?![- ](?:" + _WORD + r"|of)\b)"
     r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
     re.I,
 )
+_OBJECT_ITS = re.compile(r"\b(?:contact|collided|collision) with (?:its|his|her|it's) (?P<part>" + _PART + r")\b", re.I)
 _AGENT = re.compile(
     r"\b(?:struck|hit|impacted|contacted|rear-ended)\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
     r"(?P<v>" + _V + r")\b",
@@ -50,6 +60,7 @@ _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended)\b", re.I)
 _REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?P<b>" + _V + r")\b", re.I)
+_UNTIED_PART = re.compile(r"\b(?:front|rear|side|bumper|corner|end)\b", re.I)
 _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
 _FROM_BEHIND = re.compile(r"\bfrom behind\b", re.I)
 _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
@@ -57,6 +68,15 @@ _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 def _kind(part: str) -> CrashType | None:
     words = set(re.split(r"[- ]", part.lower()))
+    # "the front passenger side", "the rear driver side": a side named from the front or rear is that end's
+    # corner, and the end is what met (as NHTSA codes it: Front Right, Rear Left)
+    # corner, and the end is what met (as NHTSA codes it: Front Right, Rear Left); so is an end's corner or
+    # bumper named from a side ("the driver side front corner", "the passenger side front bumper")
+    low = part.lower()
+    if m := re.match(r"(front|rear|back)[- ](?:left|right|drivers?'?s?|passenger'?s?)[- ]side\b(?![- ]door)", low):
+        return CrashType.FRONTAL if m.group(1) == "front" else CrashType.REAR_END
+    if (m := re.search(r"\b(front|rear|back)[- ](?:corner|bumper)\b", low)) and not words & {"door", "panel"}:
+        return CrashType.FRONTAL if m.group(1) == "front" else CrashType.REAR_END
     if words & {"side", "door", "panel", "fender", "quarter"} or (
         "plane" in words and not words & {"front", "frontal"}
     ):
@@ -85,6 +105,12 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
         kind = _kind(m.group("part") or m.group("part2"))
         if subject is not None and kind is not None:
             parts.append((m.start(), subject, kind))
+    for m in _OBJECT_ITS.finditer(sentence):
+        # "V2 ... made contact with its front passenger side": "its" is the other one named, not the subject
+        before = _names(sentence[: m.start()])
+        owner = next((n for n in _names(sentence) if before and n != before[-1]), None)
+        if owner is not None and (kind := _kind(m.group("part"))) is not None:
+            parts.append((m.start("part"), owner, kind))
     return sorted(set(parts))
 
 
@@ -95,6 +121,15 @@ def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, Cra
     others = {who for _, who, kind in parts if kind is not CrashType.FRONTAL}
     if len(set(fronts)) == 1 and others and fronts[0] not in others:  # a front met the other's side or rear
         return fronts[0]
+    # "V2 ... made contact with the front of V1": the only part named is the object's front, so the front
+    # that met the other is the object's (a front-to-front meeting would name both fronts, or say head-on);
+    # not when the subject's own part is said in words not tied to it ("his vehicle's right front", "with its")
+    hit = _ACTIVE.search(sentence)
+    said = hit and (_UNTIED_PART.search(sentence[: hit.start()]) or _OWN_PART.search(sentence))
+    if hit and not said and not others and len(set(fronts)) == 1 and all(at > hit.end() for at, _, _ in parts):
+        named = [n.group() for n in re.finditer(r"\b" + _V + r"\b", sentence[: hit.start()])]
+        if named and named[-1] != fronts[0] and not _HEAD_ON.search(sentence):
+            return fronts[0]
     for m in _ACTIVE.finditer(sentence):  # the subject of an active strike: the last one named before it
         named = [n for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)]
         if named and not _PASSIVE.search(sentence, max(0, m.start() - 12), m.end()):
@@ -142,6 +177,11 @@ def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
     if _FROM_BEHIND.search(sentence):
         return Crash(CrashType.REAR_END, striker, victim)
     kind = CrashType.FRONTAL if head_on else _said_part(sentence)
+    # "V2 ... made contact with the front of V1": V2 came across V1's path, so V1's front met its side
+    hit = _ACTIVE.search(sentence)
+    only_front = parts and all(w == striker and k is CrashType.FRONTAL for _, w, k in parts)
+    if kind is None and hit and only_front and all(at > hit.end() for at, _, _ in parts):
+        kind = CrashType.SIDE
     if kind is None and "rear-ended" in sentence.lower():
         kind = CrashType.REAR_END
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)

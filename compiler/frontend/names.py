@@ -28,7 +28,7 @@ _KINDS = (
 )
 _PEOPLE = frozenset(("pedestrian", "bicyclist", "cyclist", "pedalcyclist"))
 _USER = re.compile(r"\b(?:an?|the|another|one) " + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])", re.I)
-_OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist)\b", re.I)
+_OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist|driver)\b", re.I)
 
 # The automated vehicle: "a Waymo Autonomous Vehicle", "the Waymo AV", "the Cruise AV", "the ADS vehicle",
 # "the test vehicle", "our vehicle", "the ego", "the subject vehicle".
@@ -141,6 +141,8 @@ def _others(text: str) -> list[tuple[str, str]]:
                 users.append((_head(m), m.group()))
         if users:
             return users
+        if other := _OTHER.search(sentence):  # "the other driver made contact with V1": a vehicle, unnamed
+            return [("vehicle", other.group())]
         before = [m for s in sents[:i] for m in _USER.finditer(s)]
         return [(_head(before[-1]), before[-1].group())] if before else []
     return []

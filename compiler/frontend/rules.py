@@ -20,7 +20,14 @@ from sovarc.compiler.frontend.crash import read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
-from sovarc.compiler.frontend.text import describes_impact, first_impact, participants, prepare, sentences
+from sovarc.compiler.frontend.text import (
+    describes_impact,
+    first_impact,
+    impact_clause,
+    participants,
+    prepare,
+    sentences,
+)
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -54,7 +61,11 @@ _WEATHER = [
     (Weather.WINDY, r"\bwindy\b|\bwinds? (?:was|were)\b|\bhigh winds?\b"),
     (Weather.SUNNY, r"\bsunny\b"),
 ]
-_DARK = r"\bdark(?:ness)?\b|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+# "A dark colored Nissan", "a dark gray SUV": a colour of a vehicle, not the scene's lighting.
+_DARK = (
+    r"\bdark(?:ness)?\b(?![- ](?:colou?red|gr[ae]y|blue|green|red|brown|silver|tinted|painted|sedan|suv|car))"
+    r"|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+)
 _LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
 _DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
 _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
@@ -331,6 +342,24 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
+# A vehicle the impact sentence says stood still when it was hit: "the stationary V1", "while V1 remained
+# stopped". Its front may have met the other (a car reversing into it), but it had not moved off.
+_STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
+
+
+def _still_at_impact(sentence: str, pid: str) -> bool:
+    return bool(
+        re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
+        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
+    )
+
+
+def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
+    """The actions up to the last stop, or with a stop added."""
+    stops = [i for i, a in enumerate(actions) if a.kind is ActionKind.STOP]
+    return actions[: stops[-1] + 1] if stops else (*actions, Action(ActionKind.STOP))
+
+
 def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     """A scenario from a report's text by rules alone."""
     named = prepare(text)
@@ -348,7 +377,7 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
             carry,
             crash.striker,
             crash.victim,
-            *re.findall(r"\bP\d\b", " ".join(filter(describes_impact, sents))),
+            *(p for s in filter(describes_impact, sents) for p in re.findall(r"\bP\d\b", impact_clause(s))),
         }
         ids = [pid for pid in ids if pid.startswith("V") or pid in involved]
     parts = pieces(sents, ids)
@@ -403,6 +432,10 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         spots += [
             _clause(f"{pid}.actions[{n}]", p, at - p.at) for n, at in enumerate(ats, 1) if (p := _piece_at(early, at))
         ]
+        if isinstance(actions, tuple) and impact >= 0 and _still_at_impact(sents[impact], pid):
+            actions = _ending_stopped(actions)
+        if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
+            actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:
             actions = (*actions, Action(ActionKind.RETROGRADE))
             spots.append((f"{pid}.actions[{len(actions)}]", "sentence", wrong_way[pid], 0))

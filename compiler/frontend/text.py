@@ -26,7 +26,8 @@ _IMPACT = re.compile(
 _NO_IMPACT = re.compile(
     r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:collision|impact|contact|crash|striking|hitting)\b"
-    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b",  # the scene, not the participants meeting
+    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
+    r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b",  # what held then, not the meeting
     re.IGNORECASE,
 )
 
@@ -133,9 +134,33 @@ def describes_impact(sentence: str) -> bool:
     return bool(_IMPACT.search(cleaned) and re.search(r"\b[VP]\d\b", sentence))
 
 
+# A summary only names the parties ("V1 ... was in a collision involving V2 on [XXX]"); the impact is where the
+# report describes the contact, so the summary is the impact only when no sentence describes one.
+_SUMMARY = re.compile(
+    r"\b(?:was|were) (?:in|involved in) an? (?:\w+ )?(?:collision|crash|incident)\b|\bcollision involving\b", re.I
+)
+
+
+# Where a sentence's clauses part: "V1 was yielding to P1 crossing the street | when V2 made contact with V1".
+_CLAUSE = re.compile(r",? \b(?:when|while|as|after|before|because|and then)\b |[,;] ", re.I)
+
+
+def impact_clause(sentence: str) -> str:
+    """The clauses of a sentence that say participants met; the whole sentence when none does alone. A road
+    user named only in another clause ("yielding to P1 crossing") is a bystander to this impact."""
+    clauses = [c for c in _CLAUSE.split(sentence) if describes_impact(c)]
+    return " ".join(clauses) if clauses else sentence
+
+
+# A summary run together with the description (no full stop between them) still describes the contact.
+_MET = re.compile(r"\b(?:struck|strikes|hit|rear-ended|collided with|ma(?:de|king) contact)\b", re.I)
+
+
 def first_impact(sents: list[str]) -> int:
-    """The index of the first sentence that describes an impact, or -1."""
-    return next((i for i, s in enumerate(sents) if describes_impact(s)), -1)
+    """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1."""
+    found = [i for i, s in enumerate(sents) if describes_impact(s)]
+    described = [i for i in found if not _SUMMARY.search(sents[i]) or _MET.search(sents[i])]
+    return (described or found or [-1])[0]
 
 
 def up_to_first_impact(sents: list[str]) -> list[str]:

@@ -1,0 +1,120 @@
+"""The SGO coded-field mapping and scorer: each field's mapping, the split, and `eval extraction --format sgo`."""
+
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+import pytest
+from sovarc.compiler.cli import main
+from sovarc.compiler.evaluation import sgo
+from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Weather
+
+AREAS = ("Front", "Front Left", "Front Right", "Rear", "Rear Left", "Rear Right", "Left", "Right", "Top")
+
+
+def row(**fields: str) -> dict[str, str]:
+    base = {"Report ID": "1-1", "Report Version": "1", "Crash With": "Passenger Car", "Narrative - CBI?": "N"}
+    for party in ("SV", "CP"):
+        for area in AREAS:
+            base[f"{party} Contact Area - {area}"] = ""
+    base.update({k.replace("_", " "): v for k, v in fields.items()})
+    return base
+
+
+def contact(sv: tuple[str, ...], cp: tuple[str, ...], **fields: str) -> dict[str, str]:
+    r = row(**fields)
+    for party, areas in (("SV", sv), ("CP", cp)):
+        for area in areas:
+            r[f"{party} Contact Area - {area}"] = "Y"
+    return r
+
+
+def test_lighting_weather_and_limit_map_to_the_ir() -> None:
+    assert sgo.lighting(row(Lighting="Dark - Lighted")).accept == {frozenset((Lighting.DARK, Lighting.STREET_LIGHTS))}
+    assert sgo.lighting(row(Lighting="Dawn / Dusk")).accept == {frozenset((Lighting.DARK,))}
+    assert sgo.lighting(row(Lighting="Other, see Narrative")).skip == sgo.NOT_SCORED
+    flags = row(**{"Weather - Rain": "Y", "Weather - Cloudy": "Y"})
+    assert sgo.weather(flags).accept == {frozenset((Weather.RAINY, Weather.CLOUDY))}
+    assert sgo.weather(row(**{"Weather - Unknown": "Y"})).skip == sgo.NOT_SCORED
+    assert sgo.speed_limit(row(**{"Posted Speed Limit (MPH)": "25"})).accept == {25}
+    assert sgo.speed_limit(row(**{"Posted Speed Limit (MPH)": "0"})).skip == sgo.NOT_SCORED
+    assert sgo.road_kind(row(**{"Roadway Type": "Street"})).skip == sgo.NOT_SCORED
+
+
+def test_movements_the_ir_cannot_say_are_counted_apart() -> None:
+    assert sgo.movement(row(**{"SV Pre-Crash Movement": "Stopped"}), "SV").accept == {ActionKind.STOP}
+    assert ActionKind.GO_ACROSS in sgo.movement(row(**{"CP Pre-Crash Movement": "Proceeding Straight"}), "CP").accept
+    assert sgo.movement(row(**{"CP Pre-Crash Movement": "Backing"}), "CP").skip == sgo.NOT_EXPRESSIBLE
+    assert sgo.movement(row(**{"SV Pre-Crash Movement": "Parked"}), "SV").skip == sgo.NOT_EXPRESSIBLE
+    assert sgo.movement(row(**{"SV Pre-Crash Movement": "Other, see Narrative"}), "SV").skip == sgo.NOT_SCORED
+
+
+@pytest.mark.parametrize(
+    ("sv", "cp", "kind", "striker"),
+    [
+        (("Rear",), ("Front", "Front Left"), CrashType.REAR_END, "CP"),
+        (("Front Right",), ("Left",), CrashType.SIDE, "SV"),
+        (("Front",), ("Front Left",), CrashType.FRONTAL, None),
+        (("Rear Left",), ("Rear Left",), None, None),  # no front in contact: neither is scored
+    ],
+)
+def test_contact_areas_give_crash_type_and_striker(
+    sv: tuple[str, ...], cp: tuple[str, ...], kind: CrashType | None, striker: str | None
+) -> None:
+    crash_type, who = sgo.contact(contact(sv, cp))
+    assert crash_type.accept == ({kind} if kind else set())
+    assert who.accept == ({striker} if striker else set())
+
+
+def test_a_backing_party_makes_the_crash_not_expressible() -> None:
+    crash_type, who = sgo.contact(contact(("Front",), ("Rear",), **{"CP Pre-Crash Movement": "Backing"}))
+    assert crash_type.skip == who.skip == sgo.NOT_EXPRESSIBLE
+
+
+NARRATIVE = (
+    "A Waymo Autonomous Vehicle was stopped at a red light on [XXX] when a passenger car approached from behind "
+    "and made contact with the rear bumper of the Waymo AV. It was raining."
+)
+
+
+def write_csv(path: Path, rows: list[dict[str, str]]) -> Path:
+    columns = sorted({k for r in rows for k in r})
+    with path.open("w", encoding="utf-8", newline="") as f:
+        writer = csv.DictWriter(f, columns)
+        writer.writeheader()
+        writer.writerows(rows)
+    return path
+
+
+def test_eval_sgo_scores_both_halves(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    coded = {
+        "Narrative": NARRATIVE,
+        "SV Pre-Crash Movement": "Stopped",
+        "CP Pre-Crash Movement": "Proceeding Straight",
+        "Lighting": "Daylight",
+        "Weather - Rain": "Y",
+    }
+    # Report ids 1-1 and 1-3 fall in different halves (sha256 parity of the id).
+    ids = [i for i in ("1-1", "1-2", "1-3", "1-4", "1-5")]
+    halves = {sgo.held_out(i) for i in ids}
+    assert halves == {True, False}
+    rows = [contact(("Rear",), ("Front",), **coded, **{"Report ID": i}) for i in ids]
+    rows.append(row(**{"Report ID": "2-1", "Narrative": "x" * 120, "Crash With": "Animal"}))  # not two-party
+    path = write_csv(tmp_path / "sgo.csv", rows)
+    assert main(["eval", "extraction", "--format", "sgo", str(path), "--llm", "none", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    assert sum(h["reports"] for h in got.values()) == len(ids)
+    for half in got.values():
+        attrs = half["attributes"]
+        assert half["extracted"] == half["reports"]
+        assert attrs["striker"]["right"] == attrs["striker"]["scored"] == half["reports"]
+        assert attrs["crash type"]["right"] == half["reports"]
+        assert attrs["SV movement"]["right"] == half["reports"]
+        assert attrs["weather"]["right"] == half["reports"]
+
+
+def test_eval_sgo_needs_its_csv(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["eval", "extraction", "--format", "sgo", "--llm", "none"]) == 2
+    assert "SGO incident CSV" in capsys.readouterr().err

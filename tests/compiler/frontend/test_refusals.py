@@ -1,0 +1,55 @@
+"""Bad input: one clear error naming the file and the reason, and nothing half-written."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from sovarc.compiler.cli import main
+from sovarc.compiler.frontend import FrontEnd, FrontEndError
+from sovarc.dsl.span import Source
+
+CRASH = (
+    "On May [XXX], 2022 at 1:26 PM PST a Waymo Autonomous Vehicle was stopped at a red light on [XXX]. "
+    "A passenger car approached from behind and made contact with the rear bumper of the Waymo AV."
+)
+
+
+def extract(text: str, name: str = "r.txt") -> object:
+    return FrontEnd("none").extract(Source(name, text)).scenario
+
+
+def test_one_crash_is_read() -> None:
+    extract(CRASH)
+
+
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        ("V1 was traveling north on Main Street. V2 was traveling south on Main Street. Both continued.", "no crash"),
+        ("The Waymo AV braked to avoid a collision with a passenger car and stopped. Nobody was hurt.", "no crash"),
+        (CRASH + "\n" + CRASH.replace("1:26 PM", "4:40 PM"), "more than one report"),
+        (CRASH + "\n-----\n" + "V1 was traveling north when V2 struck the rear of V1.", "more than one report"),
+        (CRASH + " In a separate incident later that day, the Waymo AV was struck by an SUV.", "several crashes"),
+        ("El vehículo autónomo estaba detenido cuando un coche lo golpeó por detrás en la calle.", "English"),
+    ],
+)
+def test_bad_input_is_refused_in_one_line_naming_the_file(text: str, reason: str) -> None:
+    with pytest.raises(FrontEndError) as caught:
+        extract(text, "reports/bad.txt")
+    message = str(caught.value)
+    assert "reports/bad.txt" in message and reason in message
+    assert "\n" not in message
+
+
+def test_a_refused_report_writes_nothing_and_the_others_are_written(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    good, bad = tmp_path / "good.txt", tmp_path / "two.txt"
+    good.write_text(CRASH, encoding="utf-8")
+    bad.write_text(CRASH + "\n" + CRASH.replace("1:26 PM", "4:40 PM"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["extract", str(good), str(bad), "-o", str(out), "--llm", "none"]) == 1
+    err = capsys.readouterr().err
+    assert "two.txt" in err and "more than one report" in err and "1 of 2 scenario(s) written" in err
+    assert sorted(p.name for p in out.iterdir()) == ["good.sov"]

@@ -1,0 +1,126 @@
+"""SGO-style narratives (an automated vehicle and the road user it met, named in words): each kind of language
+the rules front end reads, on sentences written for these tests."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Scenario, Unknown
+from sovarc.dsl.span import Source
+
+SUMMARY = (
+    "On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle (Waymo AV) was in a collision involving {} on [XXX]. "
+)
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
+
+
+def last(s: Scenario, pid: str) -> ActionKind | None:
+    p = next(p for p in s.participants if p.id == pid)
+    return None if isinstance(p.actions, Unknown) else p.actions[-1].kind
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        "when it was rear-ended by a passenger car",
+        "when it was struck by a passenger car from behind",
+        "when it was hit by a passenger car from behind",
+    ],
+)
+def test_the_by_agent_of_a_passive_strikes(impact: str) -> None:
+    s = read(f"The Waymo AV was stopped at a red light on [XXX] {impact}.")
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+    assert last(s, "V1") is ActionKind.STOP
+
+
+def test_a_summary_opening_is_not_the_impact() -> None:
+    s = read(
+        SUMMARY.format("a passenger car")
+        + "The Waymo AV was traveling north on [XXX] and came to a stop at a red light. The passenger car, "
+        "following behind the Waymo AV, made contact with the rear of the stationary Waymo AV."
+    )
+    assert s.crash.type is CrashType.REAR_END and s.crash.striker == "V2"
+    assert last(s, "V1") is ActionKind.STOP
+    assert last(s, "V2") is ActionKind.FOLLOW_LANE  # "the stationary V1" is V1's state, not V2's
+
+
+def test_parts_named_from_an_end_decide_the_striker() -> None:
+    """The party whose front met the other's side or rear is the striker, whoever the grammatical subject."""
+    s = read(
+        SUMMARY.format("an SUV")
+        + "The Waymo AV was proceeding through the intersection when the SUV began to make a right turn, and the "
+        "rear passenger side of the SUV made contact with the front driver side of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.type) == ("V1", CrashType.REAR_END)
+    assert last(s, "V2") is ActionKind.TURN_RIGHT
+
+
+def test_only_the_objects_front_named_makes_it_the_striker() -> None:
+    s = read(
+        SUMMARY.format("a pickup truck")
+        + "The Waymo AV was traveling east on [XXX]. The pickup truck entered the intersection against its red "
+        "light, making contact with the front of the Waymo AV."
+    )
+    assert s.crash.striker == "V1"
+
+
+def test_its_part_after_contact_with_is_the_other_partys() -> None:
+    s = read(
+        "The Cruise AV was proceeding through the intersection when a pickup truck began to make a right turn "
+        "and made contact with its front passenger side."
+    )
+    assert s.crash.striker == "V1"
+
+
+def test_a_colour_is_not_the_lighting() -> None:
+    s = read("A dark colored Nissan sedan made contact with the rear bumper of the Waymo AV at a red light.")
+    assert isinstance(s.environment.lighting, Unknown)
+    s = read("It was dark. A sedan made contact with the rear bumper of the Waymo AV at a red light.")
+    assert s.environment.lighting == (Lighting.DARK,)
+
+
+def test_a_bystander_in_another_clause_is_no_participant() -> None:
+    s = read(
+        "The Waymo AV was yielding to a pedestrian crossing the street when the driver of a passenger car made "
+        "contact with the rear of the Waymo AV."
+    )
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+
+
+def test_the_other_driver_is_the_crash_partner() -> None:
+    s = read("The Waymo AV was stopped at a red light. The other driver made contact with the rear of the Waymo AV.")
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+    assert s.crash.striker == "V2"
+
+
+@pytest.mark.parametrize(
+    ("said", "kind"),
+    [
+        ("was stopped at a red light", ActionKind.STOP),
+        ("was slowing to a stop for a queue of traffic", ActionKind.STOP),
+        ("was proceeding through the intersection", ActionKind.GO_ACROSS),
+        ("began to make a right turn", ActionKind.TURN_RIGHT),
+        ("was traveling north on [XXX]", ActionKind.FOLLOW_LANE),
+    ],
+)
+def test_the_automated_vehicles_movement(said: str, kind: ActionKind) -> None:
+    s = read(f"The Waymo AV {said} at the intersection when a passenger car made contact with the rear of it.")
+    assert last(s, "V1") is kind
+
+
+def test_moving_off_after_a_stop_and_going_around() -> None:
+    s = read(
+        SUMMARY.format("an SUV")
+        + "The Waymo AV was stopped at a red light. The SUV, which had been stopped behind the Waymo AV, began to "
+        "move forward and made contact with the rear of the Waymo AV."
+    )
+    assert last(s, "V2") is ActionKind.FOLLOW_LANE
+    s = read(
+        SUMMARY.format("an SUV")
+        + "The Waymo AV was stopped in a queue of traffic. The SUV maneuvered around the left side of the Waymo AV "
+        "and the passenger side of the SUV made contact with the rear driver side of the stationary Waymo AV."
+    )
+    assert last(s, "V2") is ActionKind.CHANGE_LANE
