@@ -1,16 +1,42 @@
-"""Hybrid extraction: rules read what text patterns state exactly, the model reads the dynamic layer.
+"""Hybrid extraction: rules read what text patterns state exactly, the model reads the motion layer.
 
 1. The rules read the whole report (`rules.extract`): environment, speed
-   limit, lane count, participant ids, and their own reading of the rest.
-2. The model answers the compact form (`prompting`) for the prepared
-   narrative, constrained to the answer's JSON Schema.
-3. The answer is checked against the schema, merged with the rules' reading
-   (each fact from the source that is right more often, disagreements
-   noted), and the merged scenario is verified. Problems go back to the model
-   in a bounded repair loop.
+   limit, lane count, road, participant ids, headings and lanes, and their
+   own reading of the actions and the crash.
+2. The model is asked only the motion layer (`layers`): the sentences about
+   the participants up to the first impact, numbered as in the report. It
+   answers each participant's actions and the crash in the compact form
+   (`prompting`), each fact followed by the numbers of the sentences it was
+   read from, constrained to the answer's JSON Schema.
+3. The answer is checked against the schema, its facts settled against the
+   rules' reading by their evidence (below), and the merged scenario is
+   verified. Problems go back to the model in a bounded repair loop.
 4. If the model still has no usable answer, the rules' reading stands and a
    note says so. A provider that cannot answer at all (no model, endpoint
    down, timeout) is an error: nothing is invented.
+
+The rule of settlement: a fact stands on a sentence that states it.
+- A fact's evidence is the sentence it was read from. It holds when that
+  sentence was shown, is about the fact's participant (names it, or carries
+  it as "he", "the driver") and states the fact as done: a cue word of the
+  action not under an intention ("intending to turn left" states no turn),
+  for the crash a sentence describing the impact that names the striker and
+  victim given.
+- The rules' facts hold by construction: each is read from one clause of one
+  sentence. The model's are checked; one whose evidence does not hold is
+  rejected, whatever the rules read.
+- A model fact that holds and that the rules lack is added, in the order of
+  its sentence: the model corrects the rules where they dropped or missed a
+  stated action. A fact of the rules the model lacks stays: an omission is
+  no evidence.
+- Two facts that exclude each other (a left against a right turn, two crash
+  types, two strikers) where both hold: the rules' stands, since they read
+  the exact clause where the model reads a few sentences at once; when the
+  rules have none (an unknown crash type, a struck part not named), the
+  model's that holds is taken, its type cross-checked against the headings.
+- `follow_lane` first is a convention no sentence states (a vehicle shown
+  moving); it stays the rules'.
+Every disagreement is a note saying which reading was kept and why.
 """
 
 from __future__ import annotations
@@ -128,7 +154,8 @@ def merge(rules: Scenario, answer: Answer, shown: Shown) -> tuple[Scenario, list
 
 
 def _name(a: Action) -> str:
-    return f"change_lane_{a.side}" if a.kind is ActionKind.CHANGE_LANE else a.kind.value
+    """The action as the answer names it: its kind, and the side of a lane change (not a target lane)."""
+    return f"change_lane_{a.to}" if a.kind is ActionKind.CHANGE_LANE and isinstance(a.to, Side) else a.kind.value
 
 
 def _stating(shown: Shown, pid: str, numbers: Iterable[int], a: Action) -> list[int]:
@@ -148,7 +175,8 @@ def _settle_actions(
     order of those sentences; an addition its sentences do not state is rejected, one that contradicts a
     rules' action of the same family (left against right) leaves the rules' reading."""
     modelled, cited = answer.actions[pid], answer.evidence.get(f"{pid}.actions", ())
-    if not ruled or ruled == modelled:
+    names = [_name(a) for a in ruled]
+    if not ruled or names == [_name(a) for a in modelled]:
         if not ruled and modelled:  # the rules found no action: each the model states with evidence
             kept = tuple(a for a in modelled if _stating(shown, pid, cited, a))
             return kept, [f"{pid} actions: the rules read none; kept the model's {_words(kept)}"] if kept else []
@@ -161,7 +189,9 @@ def _settle_actions(
     out = list(zip(where, ruled, strict=True))
     notes: list[str] = []
     for a in modelled:
-        if a in ruled or a.kind is ActionKind.FOLLOW_LANE:  # follow_lane is the rules' convention, stated nowhere
+        if (
+            _name(a) in names or a.kind is ActionKind.FOLLOW_LANE
+        ):  # follow_lane is the rules' convention, stated nowhere
             continue
         stated = _stating(shown, pid, cited, a)
         against = [r for r in ruled if _family(r) == _family(a)]
@@ -177,7 +207,8 @@ def _settle_actions(
             index = next((i for i, (n, r) in enumerate(out) if n > at and i > 0), len(out))
             out.insert(index, (at, a))
             notes.append(f"{pid} actions: the model's {_name(a)} is stated in sentence {at}; added to the rules'")
-    missing = [a for a in ruled if a not in modelled and a.kind is not ActionKind.FOLLOW_LANE]
+    read = {_name(a) for a in modelled}
+    missing = [a for a in ruled if _name(a) not in read and a.kind is not ActionKind.FOLLOW_LANE]
     if missing:
         notes.append(f"{pid} actions: the model did not read {_words(tuple(missing))}; kept the rules'")
     return _dedupe(tuple(a for _, a in out)), notes

@@ -1,16 +1,19 @@
-"""The model's side of the front end: the layered prompt, the compact answer form and its JSON Schema.
+"""The model's side of the front end: the motion layer's prompt, the compact answer form and its JSON Schema.
 
 The prompt is built from the reviewed text files in `prompts/` (package
-`sovarc.prompts`): an introduction, one file per layer of the paper
-(environment, road network and traffic guidance, dynamic objects) and the
-worked examples, each a narrative (`NN_name.txt`) with its answer
-(`NN_name.json`). The system prompt is the same for every report, so
-llama.cpp reuses its cached prefix and only the report itself is processed.
+`sovarc.prompts`): an introduction, the dynamic-objects layer of the paper
+and the worked examples, each a narrative (`NN_name.txt`) with its full
+reading (`NN_name.json`). The environment and road layers (`environment.md`,
+`road.md`) are read by rules exactly and so not asked (see `layers`). The
+system prompt is the same for every report, so llama.cpp reuses its cached
+prefix (saved in ~/.cache/sovarc/prefixes) and only the report's shown
+sentences are processed.
 
-The answer form is compact on purpose: only facts the model must decide,
-enum words and small integers, no free text. The model copies free text
-(a full IR schema makes it write out the narrative), and every token costs
-time on two CPU cores.
+The answer form is compact on purpose: per participant its action words then
+the numbers of the sentences that state them, and the crash as type, striker,
+victim and the impact sentence's number: enum words and small integers, no
+free text, short words (most one token). Every token the model generates costs
+a quarter of a second on two CPU cores.
 """
 
 from __future__ import annotations
