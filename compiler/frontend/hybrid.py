@@ -107,7 +107,7 @@ def parse_answer(text: str, ids: list[str], shown: Shown) -> Answer:
         data = json.loads(text)
     except ValueError as exc:
         raise AnswerError([f"the answer is not JSON ({exc.msg} at character {exc.pos})"]) from None
-    validator = jsonschema.Draft202012Validator(prompting.answer_schema(ids, shown.numbers()))
+    validator = jsonschema.Draft7Validator(prompting.answer_schema(ids, shown.numbers()))
     problems = [
         f"{'/'.join(str(p) for p in error.absolute_path) or 'answer'}: {error.message}"
         for error in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path)))

@@ -53,6 +53,7 @@ ROAD_KINDS = ("intersection", "t_junction", "straight")
 CRASH_TYPES = ("rear_end", "frontal", "side")
 MAX_ACTIONS = 5
 MAX_CITED = 3  # sentence numbers per fact: enough to point at it, few enough to stay short
+MAX_ITEMS = 6  # action words and sentence numbers of one participant together
 
 
 @dataclass(frozen=True)
@@ -174,7 +175,8 @@ def repair_prompt(shown: Shown, ids: list[str], previous: str, problems: list[st
 def answer_schema(ids: list[str], numbers: list[int]) -> dict[str, Any]:
     """The JSON Schema of the compact answer for a report with these participant ids, whose shown sentences
     have these numbers: per participant its action words then the numbers of the sentences it read them
-    from; for the crash its type, striker and victim, then the sentence numbers. Words and numbers only."""
+    from; for the crash its type, striker and victim, then the impact sentence's number. Words and numbers
+    only. Draft 7 (the tuple form), the JSON Schema llama.cpp's grammar converter reads as meant."""
     cited = {"enum": list(numbers)}
 
     def participant(pid: str) -> dict[str, Any]:
@@ -183,17 +185,13 @@ def answer_schema(ids: list[str], numbers: list[int]) -> dict[str, Any]:
             "type": "array",
             "items": {"anyOf": [{"enum": list(words.values())}, cited]},
             "minItems": 2,
-            "maxItems": MAX_ACTIONS + MAX_CITED,
+            "maxItems": MAX_ITEMS,
         }
 
     who = {"enum": [*ids, "unknown"]}
-    crash = {
-        "type": "array",
-        "prefixItems": [{"enum": list(CRASH_TYPES)}, who, who],
-        "items": cited,
-        "minItems": 4,
-        "maxItems": 3 + MAX_CITED,
-    }
+    # A tuple in the draft-07 form (`items` as a list): llama.cpp's grammar converter ignores `prefixItems`
+    # beside `items` and let the model write numbers in place of the type.
+    crash = {"type": "array", "items": [{"enum": list(CRASH_TYPES)}, who, who, cited], "minItems": 4, "maxItems": 4}
     return {
         "type": "object",
         "properties": {**{pid: participant(pid) for pid in ids}, "crash": crash},
