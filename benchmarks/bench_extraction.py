@@ -122,6 +122,7 @@ def main() -> None:
                 row |= {"calls": counter.calls, "prompt": counter.prompt, "read": counter.read}
                 row |= {"generated": counter.generated}
             rows.append(row)
+            print(json.dumps(row), flush=True)  # as it goes: a long run cut short still has its figures
             if truth_file is not None:
                 report.add(truth_file.parent.name + "/" + truth_file.stem, got, import_truth_file(truth_file).scenario)
         front_end.close()  # ends the model worker, so its peak memory is counted below

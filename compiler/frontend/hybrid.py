@@ -164,8 +164,15 @@ def _stating(shown: Shown, pid: str, numbers: Iterable[int], a: Action) -> list[
 
 
 def _family(a: Action) -> str:
-    """Actions of one family exclude each other: a turn is left or right, a lane change one side."""
-    return {ActionKind.TURN_LEFT: "turn", ActionKind.TURN_RIGHT: "turn"}.get(a.kind, a.kind.value)
+    """Actions of one family exclude each other: a turn is left or right, a lane change one side, and a
+    vehicle enters the road or leaves it (from a driveway or into one), not both before one impact."""
+    families = {
+        ActionKind.TURN_LEFT: "turn",
+        ActionKind.TURN_RIGHT: "turn",
+        ActionKind.DRIVE_INTO: "road edge",
+        ActionKind.DRIVE_OFF: "road edge",
+    }
+    return families.get(a.kind, a.kind.value)
 
 
 def _settle_actions(

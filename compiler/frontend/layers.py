@@ -123,7 +123,7 @@ _CUES: dict[str, str] = {
     "stop": r"\bstop|slow|wait|park|stand|stationary|queue|halt|yield|brak",
     "u_turn": r"\bu[- ]?turn|turn\w* around",
     "drive_into": r"pull|exit|enter|driveway|parking|shoulder|merg|onto|from (?:a|the|its)",
-    "drive_off": r"\boff\b|shoulder|ditch|depart|leav|left the road|curb|roadside|driveway",
+    "drive_off": r"\boff\b|shoulder|ditch|depart|leav|left the road|curb|roadside",
     "retrograde": r"oncoming|opposite|wrong|cent(?:er|re)|yellow|median|into the (?:north|south|east|west) ?bound|"
     r"other lane|crossed over",
     "cross": r"cross|walk|ran\b|running|enter|step|dart",

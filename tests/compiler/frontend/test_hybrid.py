@@ -305,3 +305,12 @@ def test_a_struck_part_the_report_does_not_name_stays_unknown() -> None:
     assert merged.crash == Crash(UNKNOWN, "V2", "V1")
     assert "crash: the report names no struck part; the model's side is not kept" in notes
     assert "V2 actions: the model did not read [drive_into]; kept the rules'" in notes
+
+
+def test_entering_and_leaving_the_road_exclude_each_other() -> None:
+    shown = motion_layer("V1 was leaving a parking lot and pulled onto the road. V2 was eastbound. V2 struck V1.")
+    rules = _two((Action(ActionKind.DRIVE_INTO),), FOLLOW)
+    leave = '{"V1":["leave",1],"V2":["follow",2],"crash":["side","V2","V1",3]}'
+    merged, notes = merge(rules, parse_answer(leave, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["drive_into"]
+    assert "V1 actions: the model read drive_off, the rules drive_into; kept the rules" in notes
