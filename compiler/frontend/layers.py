@@ -120,7 +120,7 @@ _CUES: dict[str, str] = {
     "turn_right": _TURN.format(side="right"),
     "change_lane": r"\blanes?\b|merg|swerv|veer|steer",
     "go_across": r"intersection|junction|through|across|straight|cross|enter|red (?:light|signal)|proceed",
-    "stop": r"\bstop|slow|wait|park|stand|stationary|queue|halt|yield|brak",
+    "stop": r"\bstop|slow|wait|park|stand|stationary|queue|halt|yield",
     "u_turn": r"\bu[- ]?turn|turn\w* around",
     "drive_into": r"pull|exit|enter|driveway|parking|shoulder|merg|onto|from (?:a|the|its)",
     "drive_off": r"\boff\b|shoulder|ditch|depart|leav|left the road|curb|roadside",
@@ -142,9 +142,16 @@ def cue(action: str) -> re.Pattern[str]:
     return re.compile(_CUES[key], re.I)
 
 
+# A move made to avoid the crash is evasive, and the paper's conventions drop it ("steered left to avoid V2").
+_EVASIVE = re.compile(r"^\w*(?:\W+\w+){0,5}?\W+(?:to avoid|avoid\w*|evasive|in an attempt to)\b", re.I)
+
+
 def states_action(sentence: str, action: str) -> bool:
-    """The sentence states `action` as done: one of its cue words, not under an intention."""
-    return any(not _INTENTION.search(sentence[: m.start()]) for m in cue(action).finditer(sentence))
+    """The sentence states `action` as done: one of its cue words, not under an intention nor evasive."""
+    return any(
+        not _INTENTION.search(sentence[: m.start()]) and not _EVASIVE.search(sentence[m.start() :])
+        for m in cue(action).finditer(sentence)
+    )
 
 
 def states_impact(sentence: str) -> bool:
