@@ -6,6 +6,12 @@ The request is the front end's own: the layered system prompt (its processed sta
 Run on demand: `python benchmarks/bench_embedded.py [--cache-dir DIR] [--threads N]`.
 With a fresh `--cache-dir` the first figure is a cold join; otherwise it is the
 marker check. Prints figures; asserts nothing beyond the answer validating.
+
+`--count-tokens DIR` counts instead, with llama.cpp's own tokenizer and no
+generation, what the model reads per report (the user prompt after the cached
+system prompt) in the motion layer and in the whole narrative up to the first
+impact (what it was sent before), and the answer's length in both forms for the
+rules' own reading: figures that do not depend on the machine's load.
 """
 
 from __future__ import annotations
@@ -13,13 +19,19 @@ from __future__ import annotations
 import argparse
 import json
 import resource
+import statistics
 import time
+import urllib.request
 from pathlib import Path
+from typing import Any
 
 import jsonschema
 from sovarc.compiler.frontend import prompting
+from sovarc.compiler.frontend.layers import Shown, motion_layer
 from sovarc.compiler.frontend.providers.embedded import EmbeddedProvider
 from sovarc.compiler.frontend.providers.model_file import ensure_model_file
+from sovarc.compiler.frontend.rules import extract
+from sovarc.dsl.ir import Action, ActionKind, Scenario
 
 NARRATIVE = (
     "The crash happened on a two-lane rural road with one lane in each direction. The posted speed limit was "
@@ -31,21 +43,99 @@ NARRATIVE = (
 )
 
 
+def _tokenizer(model_path: Path) -> Any:
+    """A token counter: llama.cpp's /tokenize on a small server of the same model."""
+    import xllamacpp  # the model extra
+
+    params = xllamacpp.CommonParams()
+    params.model.path = str(model_path)
+    params.n_ctx = 512
+    params.cpuparams.n_threads = 1
+    server = xllamacpp.Server(params)
+
+    def count(text: str) -> int:
+        request = urllib.request.Request(
+            f"{server.listening_address}/tokenize",
+            data=json.dumps({"content": text}).encode(),
+            headers={"Content-Type": "application/json"},
+        )
+        return len(json.loads(urllib.request.urlopen(request, timeout=60).read())["tokens"])
+
+    count.server = server  # type: ignore[attr-defined]  # kept alive as long as the counter
+    return count
+
+
+def _old_answer(s: Scenario) -> str:
+    """The answer form before the motion layer: full action words, objects, no evidence."""
+    people = {p.id: {"actions": [_word(a) for a in p.known_actions] or ["follow_lane"]} for p in s.participants}
+    crash = {"type": str(s.crash.type), "striker": str(s.crash.striker), "victim": str(s.crash.victim)}
+    return prompting.compact_json({"participants": people, "crash": crash})
+
+
+def _new_answer(s: Scenario, shown: Shown) -> str:
+    out: dict[str, Any] = {}
+    for p in s.participants:
+        words = prompting.VEHICLE_WORDS if p.id.startswith("V") else prompting.PEDESTRIAN_WORDS
+        about = [x.number for x in shown.sentences if shown.about(x.number, p.id)] or shown.numbers()
+        actions = [words.get(_word(a), "follow") for a in p.known_actions] or ["follow"]
+        out[p.id] = [*actions, *about[:2]]
+    out["crash"] = [str(s.crash.type), str(s.crash.striker), str(s.crash.victim), shown.numbers()[-1]]
+    return prompting.compact_json(out)
+
+
+def _word(a: Action) -> str:
+    return f"change_lane_{a.to}" if a.kind is ActionKind.CHANGE_LANE else a.kind.value
+
+
+def count_tokens(folder: Path, model_path: Path) -> None:
+    count = _tokenizer(model_path)
+    print(f"system prompt (cached prefix): {count(prompting.system_prompt())} tokens")
+    rows = []
+    for path in sorted(folder.glob("*.txt"), key=lambda p: (len(p.stem), p.stem)):
+        text = path.read_text(encoding="utf-8")
+        rules = extract(text, "r", path.name)
+        ids = [p.id for p in rules.participants]
+        if not ids:
+            continue
+        shown = motion_layer(text)
+        old_user = f"Report:\n{prompting.prepared_narrative(text)}\nParticipants: {', '.join(ids)}\nAnswer:"
+        rows.append(
+            (
+                count(text),
+                count(old_user),
+                count(prompting.user_prompt(shown, ids)),
+                count(_old_answer(rules)),
+                count(_new_answer(rules, shown)),
+            )
+        )
+    names = ("whole report", "read before (narrative to impact)", "read now (motion layer)")
+    names += ("answer before", "answer now (with evidence)")
+    print(f"{len(rows)} reports in {folder}; tokens per report, median (p90):")
+    for i, name in enumerate(names):
+        values = sorted(r[i] for r in rows)
+        print(f"  {name:<36} {statistics.median(values):6.0f} ({values[int(0.9 * (len(values) - 1))]})")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--cache-dir", type=Path, default=None)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--max-tokens", type=int, default=1024)
+    parser.add_argument("--count-tokens", type=Path, default=None, metavar="DIR", help="count, do not generate")
     args = parser.parse_args()
+    if args.count_tokens is not None:
+        count_tokens(args.count_tokens, ensure_model_file(args.cache_dir))
+        return
 
     start = time.perf_counter()
     model_path = ensure_model_file(args.cache_dir)
     print(f"model file ready:     {time.perf_counter() - start:8.2f} s  ({model_path})")
 
     ids = ["V1", "V2"]
-    schema = prompting.answer_schema(ids)
+    shown = motion_layer(NARRATIVE)
+    schema = prompting.answer_schema(ids, shown.numbers())
     system = prompting.system_prompt()
-    user = prompting.user_prompt(prompting.prepared_narrative(NARRATIVE), ids)
+    user = prompting.user_prompt(shown, ids)
     with EmbeddedProvider(model_path, threads=args.threads) as provider:
         start = time.perf_counter()
         provider.load()

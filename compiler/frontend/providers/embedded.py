@@ -1,7 +1,8 @@
 """The offline default provider: a local GGUF model run by llama.cpp through the `xllamacpp` wheel.
 
-The schema is enforced by llama.cpp's grammar sampler (response_format
-json_schema), so every answer parses; sampling is greedy with a fixed seed so
+The schema is enforced by llama.cpp's grammar sampler, as a GBNF grammar of
+its compact JSON spelling (`grammar`) or else through llama.cpp's own schema
+conversion (response_format json_schema), so every answer parses; sampling is greedy with a fixed seed so
 an answer is reproducible. The model runs in a child process (see
 `_llama_worker`) that is started on the first request, so a run served
 entirely from the answer cache never loads the model.
@@ -21,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.frontend.providers.base import ProviderError
+from sovarc.compiler.frontend.providers.grammar import compact_json_grammar
 from sovarc.compiler.frontend.providers.model_file import MODEL_FILE_NAME, MODEL_SHA256, ensure_model_file
 
 DEFAULT_SEED = 1234
@@ -42,7 +44,7 @@ class EmbeddedProvider:
         self,
         model_path: Path | None = None,
         *,
-        threads: int = 2,
+        threads: int | None = None,
         ctx: int = 8192,
         seed: int = DEFAULT_SEED,
         timeout_s: float = 120.0,
@@ -56,7 +58,9 @@ class EmbeddedProvider:
             self.model = f"{self._user_model.name}@size:{size}"
         else:
             self.model = f"{MODEL_FILE_NAME}@sha256:{MODEL_SHA256[:12]}"
-        self.threads = threads
+        # SOVARC_LLM_THREADS: on a machine shared with other work one thread can be faster, since llama.cpp's
+        # threads meet at a barrier per layer and wait there for each other to be scheduled.
+        self.threads = threads or int(os.environ.get("SOVARC_LLM_THREADS", "2"))
         self.ctx = ctx
         self.seed = seed
         self.timeout_s = timeout_s
@@ -69,14 +73,18 @@ class EmbeddedProvider:
 
     # --- the Provider interface -------------------------------------------------------------
     def complete_json(self, system: str, user: str, schema: dict[str, Any], *, max_tokens: int) -> str:
-        request = {
+        request: dict[str, Any] = {
             "messages": [{"role": "system", "content": system}, {"role": "user", "content": user}],
             "max_tokens": max_tokens,
             "temperature": 0.0,
             "seed": self.seed,
-            "response_format": {"type": "json_schema", "json_schema": {"name": "answer", "schema": schema}},
             "_prefix_file": self._prefix_file(system),
         }
+        grammar = compact_json_grammar(schema)  # compact JSON: no whitespace tokens to generate
+        if grammar is not None:
+            request["grammar"] = grammar
+        else:
+            request["response_format"] = {"type": "json_schema", "json_schema": {"name": "answer", "schema": schema}}
         response = self._call(request)
         self.last_response = response
         return _content_of(response, max_tokens)

@@ -18,6 +18,7 @@ from sovarc.compiler.frontend import FrontEnd, FrontEndError
 from sovarc.compiler.frontend.cache import CachedProvider
 from sovarc.compiler.frontend.defaults import apply_defaults
 from sovarc.compiler.frontend.hybrid import AnswerError, merge, parse_answer
+from sovarc.compiler.frontend.layers import motion_layer
 from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.rules import extract
 from sovarc.dsl import read_source, to_text, verify
@@ -29,10 +30,9 @@ from tests.conftest import EXAMPLES, Golden
 FIXTURES = Path(__file__).parent / "fixtures"
 RECORDED = sorted((FIXTURES / "answers").glob("*.json"))
 LEFT_TURN = EXAMPLES / "reports" / "left_turn_oncoming_pickup.txt"
-GOOD = (
-    '{"participants":{"V1":{"actions":["follow_lane","turn_left"]},"V2":{"actions":["follow_lane"]}},'
-    '"crash":{"type":"side","striker":"V2","victim":"V1"}}'
-)
+# The left-turn report shows sentences 5 (V1 turning left), 6 (V2 going straight), 7 and 8 (the impact).
+GOOD = '{"V1":["follow","left",5],"V2":["follow",6],"crash":["side","V2","V1",8]}'
+LEFT_TURN_SHOWN = motion_layer(LEFT_TURN.read_text())
 
 
 class Recorded:
@@ -79,8 +79,9 @@ def test_a_garbage_answer_is_repaired_with_the_problem_named() -> None:
 
 
 def test_verifier_errors_go_back_to_the_model() -> None:
-    self_strike = GOOD.replace('"victim":"V1"', '"victim":"V2"')
-    front_end, recorded = _front_end(self_strike, GOOD)
+    good = '{"V1":["follow","left",1],"V2":["follow",2],"crash":["side","V2","V1",3]}'
+    self_strike = good.replace('"V2","V1",3', '"V2","V2",3')
+    front_end, recorded = _front_end(self_strike, good)
     unstated = "At the intersection V1 was westbound and turned left. V2 was eastbound. V1 and V2 collided."
     got = front_end.extract(Source("r.txt", unstated))
     assert "'V2' cannot strike itself" in recorded.prompts[1]
@@ -98,42 +99,101 @@ def test_the_repair_loop_is_bounded_and_then_the_rules_reading_stands() -> None:
 
 def test_schema_violations_are_named_by_path() -> None:
     flying = json.loads(GOOD)
-    flying["participants"]["V1"]["actions"] = ["fly"]
-    del flying["crash"]["type"]
+    flying["V1"] = ["fly", 5]
+    flying["crash"] = ["side", "V2", "V1", 3]  # sentence 3 is not among those shown
     with pytest.raises(AnswerError) as caught:
-        parse_answer(json.dumps(flying), ["V1", "V2"])
-    assert any(p.startswith("crash: 'type' is a required property") for p in caught.value.problems)
-    assert any(p.startswith("participants/V1/actions/0: 'fly' is not one of") for p in caught.value.problems)
+        parse_answer(json.dumps(flying), ["V1", "V2"], LEFT_TURN_SHOWN)
+    assert any(p.startswith("V1/0: 'fly' is not valid") for p in caught.value.problems), caught.value.problems
+    assert any(p.startswith("crash/3: 3 is not one of [5, 6, 7, 8]") for p in caught.value.problems)
+    numbers_first = GOOD.replace('["follow","left",5]', '[5,"follow","left"]')
+    with pytest.raises(AnswerError, match="V1: the actions first, then the numbers"):
+        parse_answer(numbers_first, ["V1", "V2"], LEFT_TURN_SHOWN)
 
 
-def test_cross_checks_take_each_fact_from_its_better_reader() -> None:
-    rules = Scenario(
+def test_the_answer_carries_its_evidence_as_sentence_numbers_and_report_spans() -> None:
+    answer = parse_answer(GOOD, ["V1", "V2"], LEFT_TURN_SHOWN)
+    assert answer.evidence == {
+        "V1.actions": (5,),
+        "V2.actions": (6,),
+        "crash.type": (8,),
+        "crash.striker": (8,),
+        "crash.victim": (8,),
+    }
+    text = LEFT_TURN.read_text()
+    ((start, end),) = answer.spans["crash.striker"]
+    assert text[start:end] == "The front of V2 struck the right side of V1 within the intersection."
+
+
+def _two(v1: tuple[Action, ...], v2: tuple[Action, ...], crash: Crash | None = None) -> Scenario:
+    return Scenario(
         "s",
         road=Road(lanes=4),
         participants=(
-            Participant("V1", Role.VEHICLE, Heading.NORTH, 1, actions=(Action(ActionKind.FOLLOW_LANE),)),
-            Participant("V2", Role.VEHICLE, actions=(Action(ActionKind.FOLLOW_LANE),)),
+            Participant("V1", Role.VEHICLE, Heading.NORTH, 1, actions=v1),
+            Participant("V2", Role.VEHICLE, actions=v2),
         ),
-        crash=Crash(CrashType.REAR_END, "V1", "V2"),
+        crash=crash or Crash(),
     )
-    answer = parse_answer(GOOD, ["V1", "V2"])
-    merged, notes = merge(rules, answer)
+
+
+FOLLOW = (Action(ActionKind.FOLLOW_LANE),)
+
+
+def test_cross_checks_settle_each_disagreement_by_its_evidence() -> None:
+    rules = _two(FOLLOW, FOLLOW, Crash(CrashType.REAR_END, "V1", "V2"))
+    merged, notes = merge(rules, parse_answer(GOOD, ["V1", "V2"], LEFT_TURN_SHOWN), LEFT_TURN_SHOWN)
     # a crash the report states outright is the rules'
     assert merged.crash == Crash(CrashType.REAR_END, "V1", "V2")
     assert "crash: the report states rear_end, the model read side" in notes
     assert "crash: the report states V1 struck, the model read V2" in notes
     # headings and lanes stay the rules'
     assert merged.participant("V1").heading == Heading.NORTH and merged.participant("V1").lane == 1
-    # the model's actions are kept only where they name the same actions as the rules' reading
-    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane"]
-    assert "V1 actions: the model read [follow_lane, turn_left], the rules [follow_lane]; kept the rules" in notes
+    # the model's turn is stated as done in the sentence it cites ("was turning left"): it stands
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "turn_left"]
+    assert "V1 actions: the model's turn_left is stated in sentence 5; added to the rules'" in notes
     assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane"]
-    unstated, _ = merge(replace(rules, crash=Crash()), answer)
+    unstated, _ = merge(
+        replace(rules, crash=Crash()), parse_answer(GOOD, ["V1", "V2"], LEFT_TURN_SHOWN), LEFT_TURN_SHOWN
+    )
     assert unstated.crash == Crash(CrashType.SIDE, "V2", "V1")
 
 
+def test_a_fact_whose_sentence_does_not_state_it_is_rejected() -> None:
+    rules = _two(FOLLOW, FOLLOW)
+    # V2's turn cites sentence 5, which is about V1; the crash cites sentence 6, which describes no impact
+    wrong = '{"V1":["follow",5],"V2":["follow","right",5],"crash":["side","V2","V1",6]}'
+    merged, notes = merge(rules, parse_answer(wrong, ["V1", "V2"], LEFT_TURN_SHOWN), LEFT_TURN_SHOWN)
+    assert merged.participant("V2").known_actions == FOLLOW
+    assert "V2 actions: the model's turn_right cites sentence(s) 5, which do not state it of V2; rejected" in notes
+    assert merged.crash == Crash()
+    assert (
+        "crash: the model's side by V2 into V1 cites sentence(s) 6, which do not describe that impact; rejected"
+        in notes
+    )
+
+
+def test_an_intention_is_no_evidence_and_a_turn_said_as_done_is() -> None:
+    shown = motion_layer(
+        "V2 was northbound, intending to turn left at the intersection. V1 was southbound. "
+        "V2 then began its left turn. The front of V1 struck the right side of V2."
+    )
+    rules = _two(FOLLOW, FOLLOW)  # as if the rules had dropped the turn as intended only
+    intended = '{"V1":["follow",2],"V2":["follow","left",1],"crash":["side","V1","V2",4]}'
+    merged, notes = merge(rules, parse_answer(intended, ["V1", "V2"], shown), shown)
+    assert merged.participant("V2").known_actions == FOLLOW
+    done = intended.replace('"left",1]', '"left",1,3]')
+    merged, notes = merge(rules, parse_answer(done, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane", "turn_left"]
+    assert "V2 actions: the model's turn_left is stated in sentence 3; added to the rules'" in notes
+    # a turn to the other side than the rules read leaves the rules' reading
+    right = _two(FOLLOW, (*FOLLOW, Action(ActionKind.TURN_RIGHT)))
+    merged, notes = merge(right, parse_answer(done, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane", "turn_right"]
+    assert "V2 actions: the model read turn_left, the rules turn_right; kept the rules" in notes
+
+
 def test_defaults_are_recorded_as_assumed() -> None:
-    actions = parse_answer(GOOD, ["V1", "V2"]).actions
+    actions = parse_answer(GOOD, ["V1", "V2"], LEFT_TURN_SHOWN).actions
     s = Scenario(
         "s",
         road=Road(lanes=2),
@@ -198,10 +258,7 @@ def test_what_the_ir_cannot_hold_is_named() -> None:
         "V1 was northbound on the road. P1, a bicyclist, was riding across. The front of V1 struck P1. "
         "V1 then struck a parked car."
     )
-    front_end, _ = _front_end(
-        '{"participants":{"V1":{"actions":["follow_lane"]},"P1":{"actions":["cross"]}},'
-        '"crash":{"type":"side","striker":"V1","victim":"P1"}}'
-    )
+    front_end, _ = _front_end('{"V1":["follow",1],"P1":["cross",2],"crash":["side","V1","P1",3]}')
     notes = front_end.extract(Source("r.txt", text)).notes
     assert "a cyclist is represented as a pedestrian (the IR has no cyclist role)" in notes
     assert "only the first impact is encoded; the report describes 2 impact sentences" in notes
@@ -215,8 +272,8 @@ def test_a_rear_end_answer_against_crossing_headings_becomes_a_side_crash() -> N
             Participant("V2", Role.VEHICLE, Heading.EAST, actions=(Action(ActionKind.FOLLOW_LANE),)),
         ),
     )
-    rear = GOOD.replace('"type":"side"', '"type":"rear_end"')
-    merged, notes = merge(rules, parse_answer(rear, ["V1", "V2"]))
+    rear = GOOD.replace('["side"', '["rear_end"')
+    merged, notes = merge(rules, parse_answer(rear, ["V1", "V2"], LEFT_TURN_SHOWN), LEFT_TURN_SHOWN)
     assert merged.crash.type == CrashType.SIDE
     assert "crash: the model read rear_end, but the headings make it side; kept side" in notes
 
@@ -244,7 +301,16 @@ def test_a_struck_part_the_report_does_not_name_stays_unknown() -> None:
         ),
         crash=Crash(UNKNOWN, "V2", "V1"),  # "V1 was struck by the front of V2": who, but not where
     )
-    merged, notes = merge(rules, parse_answer(GOOD, ["V1", "V2"]))
+    merged, notes = merge(rules, parse_answer(GOOD, ["V1", "V2"], LEFT_TURN_SHOWN), LEFT_TURN_SHOWN)
     assert merged.crash == Crash(UNKNOWN, "V2", "V1")
     assert "crash: the report names no struck part; the model's side is not kept" in notes
-    assert "V2 actions: the model read [follow_lane], the rules [drive_into]; kept the rules" in notes
+    assert "V2 actions: the model did not read [drive_into]; kept the rules'" in notes
+
+
+def test_entering_and_leaving_the_road_exclude_each_other() -> None:
+    shown = motion_layer("V1 was leaving a parking lot and pulled onto the road. V2 was eastbound. V2 struck V1.")
+    rules = _two((Action(ActionKind.DRIVE_INTO),), FOLLOW)
+    leave = '{"V1":["leave",1],"V2":["follow",2],"crash":["side","V2","V1",3]}'
+    merged, notes = merge(rules, parse_answer(leave, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["drive_into"]
+    assert "V1 actions: the model read drive_off, the rules drive_into; kept the rules" in notes

@@ -10,6 +10,7 @@ from collections.abc import Iterator
 import pytest
 from sovarc.compiler.frontend import prompting
 from sovarc.compiler.frontend.hybrid import parse_answer
+from sovarc.compiler.frontend.layers import motion_layer
 from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.providers.openai_compat import OpenAIProvider
 
@@ -32,10 +33,12 @@ SYSTEM = (
     "Answer with the facts of the crash report as JSON. Actions are what each vehicle did before the impact; "
     "crossing a double yellow line is retrograde. The striker is the vehicle whose front hits."
 )
-REPORT = (
-    "Report:\nOn a two-lane road, V1 was northbound. V2 was southbound and crossed the double yellow line to pass "
-    "a truck. The front of V2 struck the front of V1.\nParticipants: V1, V2\nAnswer:"
+NARRATIVE = (
+    "On a two-lane road, V1 was northbound. V2 was southbound and crossed the double yellow line to pass "
+    "a truck. The front of V2 struck the front of V1."
 )
+SHOWN = motion_layer(NARRATIVE)
+REPORT = prompting.user_prompt(SHOWN, ["V1", "V2"])
 
 
 @pytest.fixture(scope="module")
@@ -61,9 +64,9 @@ def test_a_real_local_server_answers_in_the_compact_form(server_url: str) -> Non
     assert provider.model == f"qwen2.5-coder-1.5b@{server_url}"
     ids = ["V1", "V2"]
     answer = provider.complete_json(
-        SYSTEM, REPORT, prompting.answer_schema(ids), max_tokens=prompting.answer_budget(ids)
+        SYSTEM, REPORT, prompting.answer_schema(ids, SHOWN.numbers()), max_tokens=prompting.answer_budget(ids)
     )
-    parsed = parse_answer(answer, ids)  # the server enforced the schema: it parses
+    parsed = parse_answer(answer, ids, SHOWN)  # the server enforced the schema: it parses
     assert set(parsed.actions) == {"V1", "V2"}
     provider.close()
 

@@ -8,31 +8,40 @@ import jsonschema
 import pytest
 from sovarc.compiler.frontend import prompting
 from sovarc.compiler.frontend.hybrid import parse_answer
+from sovarc.compiler.frontend.layers import motion_layer
 from sovarc.compiler.frontend.text import normalize_names, participants
 from sovarc.dsl.ir import ActionKind, CrashType
 
 EXAMPLES = prompting.examples()
 
 
-def test_there_are_twenty_or_more_examples_and_every_layer_is_in_the_prompt() -> None:
+def test_there_are_twenty_or_more_examples_and_only_the_motion_layer_is_asked() -> None:
     assert len(EXAMPLES) >= 20
     system = prompting.system_prompt()
-    for heading in ("Layer 1: environment", "Layer 2: road network", "Layer 3: dynamic objects", "Worked examples"):
-        assert heading in system
-    for rule in ("intended", "double yellow", "right-most lane", "front", "Most vehicles"):
+    assert "Layer 3: dynamic objects" in system and "Worked examples" in system
+    # the rules read environment and road exactly: the model is not asked them, so they are not in the prompt
+    assert "Layer 1: environment" not in system and "Layer 2: road network" not in system
+    for rule in ("intended", "double yellow", "front", "Most vehicles", "Cite only sentences"):
         assert rule in system
     assert system.count("Report:\n") == len(EXAMPLES)
     assert system == prompting.system_prompt()  # the same bytes every time: the model's prefix cache relies on it
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=lambda e: e.name)
-def test_each_example_answer_fits_the_answer_form(example: prompting.Example) -> None:
+def test_each_example_answer_fits_the_answer_form_and_cites_sentences_about_its_facts(
+    example: prompting.Example,
+) -> None:
     ids = participants(normalize_names(example.narrative))
     assert list(example.answer["participants"]) == ids
     jsonschema.validate(example.answer, prompting.full_schema(ids))  # the whole reading, documented
-    shown = prompting.answer_view(example.answer)  # the part the model answers
-    jsonschema.validate(shown, prompting.answer_schema(ids))
-    assert set(parse_answer(prompting.compact_json(shown), ids).actions) == set(ids)
+    shown = motion_layer(example.narrative)
+    view = prompting.answer_view(example.answer, shown)  # the part the model answers
+    jsonschema.validate(view, prompting.answer_schema(ids, shown.numbers()))
+    answer = parse_answer(prompting.compact_json(view), ids, shown)
+    assert set(answer.actions) == set(ids)
+    for pid in ids:  # every cited sentence is about the participant it is cited for
+        assert answer.evidence[f"{pid}.actions"] and all(shown.about(n, pid) for n in answer.evidence[f"{pid}.actions"])
+    assert answer.spans["crash.type"]
 
 
 def test_examples_cover_every_action_crash_type_and_road_kind() -> None:
@@ -51,10 +60,27 @@ def test_prepared_narrative_names_participants_and_stops_at_the_first_impact() -
     assert prompting.prepared_narrative(text) == "V1 was northbound. V2 was southbound. The front of V1 struck V2."
 
 
+def test_the_motion_layer_shows_only_sentences_about_participants_numbered_with_their_spans() -> None:
+    text = (
+        "The road was wet and the posted limit was 45 mph. Vehicle #1 was northbound. He then turned left.  "
+        "Traffic was heavy. Vehicle #2 was southbound. The front of V2 struck V1. V1 rolled over."
+    )
+    shown = motion_layer(text)
+    assert shown.numbers() == [2, 3, 5, 6]  # not the road, the traffic or the aftermath
+    assert shown.text().splitlines()[0] == "[2] V1 was northbound."
+    assert [text[a:b] for a, b in (s.span for s in shown.sentences)] == [
+        "Vehicle #1 was northbound.",
+        "He then turned left.",
+        "Vehicle #2 was southbound.",
+        "The front of V2 struck V1.",
+    ]
+    assert shown.about(3, "V1") and not shown.about(3, "V2")  # "he" carries V1
+    assert shown.about(6, "V2") and not shown.about(5, "V1")
+
+
 def test_the_answer_form_is_compact_and_bound_to_the_report() -> None:
-    schema = prompting.answer_schema(["V1", "P1"])
-    people = schema["properties"]["participants"]
-    assert people["required"] == ["V1", "P1"] and people["additionalProperties"] is False
-    assert people["properties"]["P1"]["properties"]["actions"]["items"]["enum"] == ["cross", "walk"]
-    assert schema["properties"]["crash"]["properties"]["striker"]["enum"] == ["V1", "P1", "unknown"]
+    schema = prompting.answer_schema(["V1", "P1"], [2, 4])
+    assert schema["required"] == ["V1", "P1", "crash"] and schema["additionalProperties"] is False
+    assert schema["properties"]["P1"]["items"]["anyOf"] == [{"enum": ["cross", "walk"]}, {"enum": [2, 4]}]
+    assert schema["properties"]["crash"]["prefixItems"][1]["enum"] == ["V1", "P1", "unknown"]
     assert "string" not in str(schema)  # no free text anywhere: every value is a word of an enum or a number
