@@ -81,16 +81,17 @@ def test_a_span_the_report_does_not_hold_is_an_internal_error(monkeypatch: pytes
     assert not issubclass(EvidenceError, FrontEndError)  # never mistaken for a problem of the report
 
 
-def test_the_models_facts_carry_the_sentences_it_was_shown() -> None:
+def test_the_models_facts_carry_the_sentences_its_answer_cited() -> None:
     text = "At the intersection V1 was westbound and turned left. V2 was eastbound. V1 and V2 collided. Both stopped."
-    front_end, _ = _front_end(GOOD)
+    front_end, _ = _front_end('{"V1":["follow","left",1],"V2":["follow",2],"crash":["side","V2","V1",3]}')
     s = front_end.extract(Source("r.txt", text)).scenario
     assert s.provenance is not None
     model = [e for e in s.provenance.evidence if e.reader is Reader.MODEL]
     assert {e.fact for e in model} == {"crash.type", "crash.striker", "crash.victim"}
+    assert {e.quote for e in model} == {"V1 and V2 collided."}  # the sentence the answer cited for the crash
+    assert check_evidence(text, s.provenance.evidence) == []
     start, end = shown_span(text)
-    assert text[start:end] == text[: text.index(" Both")]  # up to the first impact, as the model read it
-    assert all((e.start, e.end) == (start, end) for e in model)
+    assert text[start:end] == text[: text.index(" Both")]  # what the model was shown: up to the first impact
     replaced = attach_evidence(s, "crash.type", 0, 3, text, Reader.RULES)
     assert replaced.provenance is not None
     assert [e.quote for e in replaced.provenance.evidence_for("crash.type")] == ["At"]

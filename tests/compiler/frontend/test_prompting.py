@@ -36,7 +36,7 @@ def test_each_example_answer_fits_the_answer_form_and_cites_sentences_about_its_
     jsonschema.validate(example.answer, prompting.full_schema(ids))  # the whole reading, documented
     shown = motion_layer(example.narrative)
     view = prompting.answer_view(example.answer, shown)  # the part the model answers
-    jsonschema.validate(view, prompting.answer_schema(ids, shown.numbers()))
+    jsonschema.Draft7Validator(prompting.answer_schema(ids, shown.numbers())).validate(view)  # the tuple form
     answer = parse_answer(prompting.compact_json(view), ids, shown)
     assert set(answer.actions) == set(ids)
     for pid in ids:  # every cited sentence is about the participant it is cited for
@@ -82,5 +82,5 @@ def test_the_answer_form_is_compact_and_bound_to_the_report() -> None:
     schema = prompting.answer_schema(["V1", "P1"], [2, 4])
     assert schema["required"] == ["V1", "P1", "crash"] and schema["additionalProperties"] is False
     assert schema["properties"]["P1"]["items"]["anyOf"] == [{"enum": ["cross", "walk"]}, {"enum": [2, 4]}]
-    assert schema["properties"]["crash"]["prefixItems"][1]["enum"] == ["V1", "P1", "unknown"]
+    assert schema["properties"]["crash"]["items"][1]["enum"] == ["V1", "P1", "unknown"]  # a draft-07 tuple
     assert "string" not in str(schema)  # no free text anywhere: every value is a word of an enum or a number
