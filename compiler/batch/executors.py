@@ -20,6 +20,7 @@ from multiprocessing import get_context
 from typing import Any, Protocol
 
 from sovarc.dsl.errors import SovarcError
+from tqdm import tqdm
 
 EXECUTORS = ("local", "ray")
 RAY_HINT = "pip install 'sovarc[ray]'"
@@ -116,6 +117,16 @@ class RayExecutor:
     def close(self) -> None:
         if self._started and self._ray.is_initialized():
             self._ray.shutdown()
+
+
+def run_all(executor: Executor, fn: Callable[[Any], Any], items: Sequence[Any], label: str) -> list[Any]:
+    """Every item's result, in the items' order however the executor scheduled them, with a progress bar."""
+    done: list[Any] = [None] * len(items)
+    with tqdm(total=len(items), desc=label, unit="task", disable=None) as bar:
+        for index, result in executor.run(fn, items):
+            done[index] = result
+            bar.update(1)
+    return done
 
 
 def make_executor(name: str, jobs: int | None = None, address: str | None = None) -> Executor:

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from sovarc.compiler.batch.executors import run_all
 from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.cli.batch import executor_of
 from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
@@ -109,12 +110,9 @@ def cmd_eval_srr(args: argparse.Namespace) -> int:
     for map_path in maps:
         worker_map(map_path)  # a bad map is said before any task runs (and an .xodr is converted once)
     tasks = [SrrTask(str(path), str(m), args.roads, args.seed, args.spare_sites) for m in maps for path in files]
-    done: list[list[dict[str, Any]]] = [[] for _ in tasks]
     executor = executor_of(args)
     try:
-        for index, rows in tqdm(executor.run(run_srr_task, tasks), total=len(tasks), desc="srr", unit="task",
-                                disable=None):  # fmt: skip
-            done[index] = rows
+        done: list[list[dict[str, Any]]] = run_all(executor, run_srr_task, tasks, "srr")
     finally:
         executor.close()
     report: dict[str, dict[str, object]] = {}
@@ -154,18 +152,15 @@ def cmd_eval_tests(args: argparse.Namespace) -> int:
             )
             for path in files
         ]
-    done: list[TestsTable | None] = [None] * len(tasks)
     executor = executor_of(args)
     try:
-        for index, table in tqdm(executor.run(run_tests_task, tasks), total=len(tasks), desc="tests", unit="task",
-                                 disable=None):  # fmt: skip
-            done[index] = table
+        done: list[TestsTable] = run_all(executor, run_tests_task, tasks, "tests")
     finally:
         executor.close()
     report: dict[str, Any] = {}
     for number, map_path in enumerate(maps):
         name = Path(map_path).name
-        table = merged(t for t in done[number * len(files) : (number + 1) * len(files)] if t is not None)
+        table = merged(done[number * len(files) : (number + 1) * len(files)])
         report[name] = table.to_json()
         if not args.json:
             title = f"Ego failures of {ego.model_name} on {name}: {len(files)} scenario(s) x {args.roads} site(s)"

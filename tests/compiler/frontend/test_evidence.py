@@ -16,7 +16,7 @@ from sovarc.dsl.ir import Evidence, Reader, Scenario
 from sovarc.dsl.span import Source
 
 from tests.compiler.cli.test_cli import sovarc
-from tests.compiler.frontend.test_hybrid import GOOD, _front_end
+from tests.compiler.frontend.test_hybrid import _front_end
 from tests.conftest import EXAMPLES, ROOT, SHARED, Golden, requires_shared
 
 EXAMPLE = EXAMPLES / "reports" / "evidence_left_turn_signal.txt"
