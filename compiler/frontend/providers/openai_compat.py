@@ -20,6 +20,12 @@ DEFAULT_RETRIES = 2
 DEFAULT_SEED = 1234
 
 
+# An endpoint constrains an answer to its JSON Schema but not to its compact spelling (the embedded model
+# also gets a grammar that does): llama.cpp's schema conversion lets a model indent and break lines, about
+# twice the tokens of the same answer. The budget leaves room for that, so a cut-off still means garbage.
+WHITESPACE_ROOM = 4
+
+
 class OpenAIProvider:
     name = "openai"
 
@@ -53,7 +59,7 @@ class OpenAIProvider:
             response = self._client.chat.completions.create(
                 model=self._model_name,
                 messages=[{"role": "system", "content": system}, {"role": "user", "content": user}],
-                max_tokens=max_tokens,
+                max_tokens=max_tokens * WHITESPACE_ROOM,
                 temperature=0.0,
                 seed=DEFAULT_SEED,
                 response_format={"type": "json_schema", "json_schema": {"name": "answer", "schema": schema}},
@@ -71,7 +77,7 @@ class OpenAIProvider:
         choice = response.choices[0]
         content = choice.message.content or ""
         if choice.finish_reason == "length":
-            raise ProviderError(f"the model's answer was cut off at {max_tokens} tokens")
+            raise ProviderError(f"the model's answer was cut off at {max_tokens * WHITESPACE_ROOM} tokens")
         return content
 
     def close(self) -> None:
