@@ -34,7 +34,7 @@ examples:
 def add_executor_options(parser: argparse.ArgumentParser) -> None:
     """-j, --executor and --address: where independent tasks run."""
     parser.add_argument(
-        "-j", "--jobs", type=_positive, metavar="N", help="tasks run at once (default: every core; 1 runs in-process)"
+        "-j", "--jobs", type=positive, metavar="N", help="tasks run at once (default: every core; 1 runs in-process)"
     )
     parser.add_argument(
         "--executor",
@@ -58,7 +58,7 @@ def add_batch_parser(sub: Any, summary: str, formatter: Any, add_target_options:
     batch.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
     batch.add_argument("-t", "--target", action="append", metavar="TARGET",
                        help=f"a target (repeatable): {', '.join(registry.names())} or all (default sumo)")  # fmt: skip
-    batch.add_argument("--roads", type=_positive, default=1, metavar="N", help="sites per scenario and map (default 1)")
+    batch.add_argument("--roads", type=positive, default=1, metavar="N", help="sites per scenario and map (default 1)")
     batch.add_argument("--spare-sites", type=int, metavar="K", help="extra sites tried in place of failed ones")
     batch.add_argument("--seed", type=int, default=0, help="seed for every random choice (default 0)")
     batch.add_argument("-o", "--output", required=True, metavar="OUT", help="the batch's folder")
@@ -67,7 +67,8 @@ def add_batch_parser(sub: Any, summary: str, formatter: Any, add_target_options:
     add_llm_options(batch)
 
 
-def _positive(value: str) -> int:
+def positive(value: str) -> int:
+    """An argparse type: a whole number of at least 1 (sites, jobs)."""
     number = int(value)
     if number < 1:
         raise argparse.ArgumentTypeError(f"must be at least 1, not {number}")

@@ -7,7 +7,7 @@ from importlib.metadata import PackageNotFoundError, version
 from typing import Any
 
 import sovarc.targets.registry as registry
-from sovarc.compiler.cli.batch import add_batch_parser, add_executor_options
+from sovarc.compiler.cli.batch import add_batch_parser, add_executor_options, positive
 from sovarc.compiler.cli.common import add_llm_options
 from sovarc.compiler.cli.sites import add_sites_parser
 from sovarc.compiler.pipeline import STAGE_NAMES
@@ -338,13 +338,6 @@ def _not_negative(value: str) -> int:
     return number
 
 
-def _positive(value: str) -> int:
-    number = int(value)
-    if number < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, not {number}")
-    return number
-
-
 def target_names(value: str) -> tuple[str, ...]:
     """`-t`: a registered target's name, or all of them."""
     names = registry.names()
@@ -412,7 +405,7 @@ def _add_tests_parser(which: Any, formatter: Any) -> None:
     )
     tests.add_argument("scenarios", nargs="+", help=".sov files, or folders of them")
     tests.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
-    tests.add_argument("--roads", type=_positive, default=3, metavar="N", help="sites per scenario (default 3)")
+    tests.add_argument("--roads", type=positive, default=3, metavar="N", help="sites per scenario (default 3)")
     add_spare_option(tests)
     tests.add_argument(
         "--baseline", choices=("random", "none"), default="random", help="the baseline to compare with (default random)"
