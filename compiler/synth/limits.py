@@ -11,36 +11,46 @@ curve) parts are both bounded.
 
 from __future__ import annotations
 
+import functools
 import logging
+from typing import Any
 
 import numpy as np
-import toppra
-import toppra.algorithm
-import toppra.constraint
 from sovarc.compiler.vehicles import PLANNED
 
 ACCEL_LIMIT = PLANNED.plan_accel  # m/s^2 per axis: firm braking, and a sharp but possible turn
 GRID = 60  # gridpoints along the path
 SAME_POINT = 1e-3  # m; closer points are one (the spline needs increasing arc lengths)
 
-logging.getLogger("toppra").setLevel(logging.ERROR)
 
 
-class _Window(toppra.SplineInterpolator):
-    """A spline through all the points, of which TOPP-RA sees only `lo`..`hi`.
+@functools.cache
+def _toppra() -> tuple[Any, type]:
+    """toppra and the spline it judges, imported on first use: toppra imports scipy's interpolation and
+    matplotlib's pyplot (1.5 s), which a process that only hands plans to workers never needs."""
+    import toppra
+    import toppra.algorithm
+    import toppra.constraint
 
-    A cubic spline cut off where a path is cut bends there as its last few points happen to
-    lie, not as the path does: cut inside a turn, its end can curve twice as tight as the
-    turn. Points past the judged stretch keep its ends true to the path.
-    """
+    logging.getLogger("toppra").setLevel(logging.ERROR)
 
-    def __init__(self, s: np.ndarray, points: np.ndarray, lo: float, hi: float) -> None:
-        super().__init__(s, points)
-        self._interval = np.array([lo, hi])
+    class Window(toppra.SplineInterpolator):  # type: ignore[misc]
+        """A spline through all the points, of which TOPP-RA sees only `lo`..`hi`.
 
-    @property
-    def path_interval(self) -> np.ndarray:
-        return self._interval
+        A cubic spline cut off where a path is cut bends there as its last few points happen to
+        lie, not as the path does: cut inside a turn, its end can curve twice as tight as the
+        turn. Points past the judged stretch keep its ends true to the path.
+        """
+
+        def __init__(self, s: np.ndarray, points: np.ndarray, lo: float, hi: float) -> None:
+            super().__init__(s, points)
+            self._interval = np.array([lo, hi])
+
+        @property
+        def path_interval(self) -> np.ndarray:
+            return self._interval
+
+    return toppra, Window
 
 
 def arc_lengths(points: np.ndarray) -> np.ndarray:
@@ -65,9 +75,10 @@ def envelope(
         return np.array([lo, hi]), np.full(2, speed_limit)
     vlim = np.array([[-speed_limit, speed_limit]] * 2)
     alim = np.array([[-ACCEL_LIMIT, ACCEL_LIMIT]] * 2)
+    toppra, window = _toppra()
     constraints = [toppra.constraint.JointVelocityConstraint(vlim), toppra.constraint.JointAccelerationConstraint(alim)]
     grid = np.linspace(lo, hi, GRID)
-    instance = toppra.algorithm.TOPPRA(constraints, _Window(s, points, lo, hi), gridpoints=grid)
+    instance = toppra.algorithm.TOPPRA(constraints, window(s, points, lo, hi), gridpoints=grid)
     # Squared speeds, point by point: the time-optimal profile is just one profile, and on a
     # coarse grid it can dip below speeds other profiles drive there. Ends bounded above only
     # (standing still is always possible), so a start or end too fast for the path shows as
