@@ -43,6 +43,7 @@ LAZY = (
     "qc_openscenario",  # ASAM's checker, only in the OpenSCENARIO oracle
     "qc_baselib",
     "ray",  # the optional cluster executor
+    "toppra",  # imports scipy's interpolation and pyplot (1.5 s): only synthesis, in the process that plans
 )
 
 

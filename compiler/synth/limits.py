@@ -23,7 +23,6 @@ GRID = 60  # gridpoints along the path
 SAME_POINT = 1e-3  # m; closer points are one (the spline needs increasing arc lengths)
 
 
-
 @functools.cache
 def _toppra() -> tuple[Any, type]:
     """toppra and the spline it judges, imported on first use: toppra imports scipy's interpolation and
