@@ -1,7 +1,8 @@
 """THE vehicle model: per participant kind, its body and what it can do.
 
-One row per kind (today a car and a pedestrian). A new kind (bus, truck, motorcycle, bicycle) is a
-new row of MODELS; its body's `vclass` is SUMO's vehicle class, which names the kind everywhere.
+One row per kind of road user: the IR's vehicle kinds (car, van, pickup, bus, truck, motorcycle,
+bicycle) and the pedestrian. A body's `vclass` is SUMO's vehicle class; several kinds may share one
+(a pickup is a passenger car to SUMO), so a model is found by its body, which is each kind's own.
 
 Lowering, synthesis and every oracle read these numbers from here. Two different quantities that
 happen to be close (the turning radius of the rear axle, of the front bumper, and of a planned
@@ -23,7 +24,7 @@ class Body:
 
     length: float  # m
     width: float  # m
-    vclass: str  # SUMO vehicle class: passenger, pedestrian
+    vclass: str  # SUMO vehicle class: passenger, delivery, bus, truck, motorcycle, bicycle, pedestrian
 
     @property
     def front_ref(self) -> bool:
@@ -34,17 +35,26 @@ class Body:
 
 @dataclass(frozen=True)
 class Limits:
-    """How a participant may be planned to move. Today every kind is planned with the same limits
-    (walkers included: the modules that apply them do not ask which kind they plan)."""
+    """How a participant may be planned to move. Every kind has its own; modules that do not yet ask
+    which kind they plan use PLANNED, the car's."""
 
     path_radius: float  # m: the tightest bend a planned or reshaped path may take (a tight junction corner)
     plan_accel: float  # m/s^2: the most a planned trajectory asks, per axis (TOPP-RA) and along it (Ruckig)
     start_accel: float  # m/s^2: the trapezoid profile's ramp up from rest
     stop_decel: float  # m/s^2: the trapezoid profile's ramp down to rest
     lateral_accel: float  # m/s^2: the most a curve may ask (comfortable; it caps speeds in curves)
+    reverse_speed: float = 2.5  # m/s: the fastest it is planned to back (a walking pace or two: 9 km/h)
+    reverse_accel: float = 1.0  # m/s^2: its ramps up and down when backing
 
 
 PLANNED = Limits(path_radius=3.0, plan_accel=4.5, start_accel=2.0, stop_decel=3.0, lateral_accel=2.5)
+# Heavy vehicles: gentle ramps (a loaded bus or truck accelerates at about 1 m/s^2, brakes at 3-5) and a wide
+# tightest bend (a 12 m bus sweeps a 24 m kerb-to-kerb circle).
+HEAVY = Limits(path_radius=9.0, plan_accel=3.0, start_accel=1.0, stop_decel=2.0, lateral_accel=1.5, reverse_speed=1.5)
+# Two wheels: a motorcycle leans through bends a car takes slower, but is planned no harder than a car.
+TWO_WHEELS = Limits(path_radius=2.5, plan_accel=4.5, start_accel=2.5, stop_decel=3.5, lateral_accel=3.0)
+# A cyclist: ramps of a rider's legs and rim brakes.
+CYCLIST = Limits(path_radius=2.0, plan_accel=3.0, start_accel=1.0, stop_decel=2.5, lateral_accel=2.0, reverse_speed=0)
 
 
 @dataclass(frozen=True)
@@ -91,7 +101,92 @@ PEDESTRIAN_MODEL = Model(
     drive_overhang=0.2,
 )
 
-MODELS: dict[str, Model] = {m.body.vclass: m for m in (CAR_MODEL, PEDESTRIAN_MODEL)}
+# The other kinds: typical dimensions of each class (a minivan, a full-size pickup, a 12 m city bus, a
+# rigid heavy truck, a touring motorcycle, an adult's bicycle with its rider), their turning circles and
+# what they can do. Axle positions are fractions of the length, as the car's are.
+VAN_MODEL = Model(
+    Body(5.1, 2.0, "delivery"),
+    rear_overhang=0.2,
+    front_overhang=0.17,
+    axle_radius=4.6,
+    front_radius=5.0,  # a 12 m turning circle
+    drive_accel=3.0,
+    drive_brake=7.5,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+)
+PICKUP_MODEL = Model(
+    Body(5.6, 2.0, "passenger"),
+    rear_overhang=0.22,
+    front_overhang=0.17,
+    axle_radius=5.6,
+    front_radius=6.2,  # a 13-14 m turning circle
+    drive_accel=3.5,
+    drive_brake=7.5,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+)
+BUS_MODEL = Model(
+    Body(12.0, 2.55, "bus"),
+    rear_overhang=0.26,
+    front_overhang=0.22,
+    axle_radius=9.0,
+    front_radius=11.5,  # about 24 m kerb to kerb
+    drive_accel=1.2,
+    drive_brake=5.0,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+    limits=HEAVY,
+)
+TRUCK_MODEL = Model(
+    Body(10.0, 2.5, "truck"),
+    rear_overhang=0.22,
+    front_overhang=0.14,
+    axle_radius=8.5,
+    front_radius=10.5,  # about 22 m kerb to kerb
+    drive_accel=1.0,
+    drive_brake=5.0,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+    limits=HEAVY,
+)
+MOTORCYCLE_MODEL = Model(
+    Body(2.2, 0.8, "motorcycle"),
+    rear_overhang=0.15,
+    front_overhang=0.15,
+    axle_radius=2.6,
+    front_radius=2.8,
+    drive_accel=5.0,
+    drive_brake=7.0,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+    limits=TWO_WHEELS,
+)
+BICYCLE_MODEL = Model(
+    Body(1.8, 0.65, "bicycle"),
+    rear_overhang=0.2,
+    front_overhang=0.2,
+    axle_radius=2.0,
+    front_radius=2.2,
+    drive_accel=1.5,
+    drive_brake=3.5,
+    drive_wheelbase=0.6,
+    drive_overhang=0.2,
+    limits=CYCLIST,
+)
+
+# Keyed by the IR's vehicle kinds (VehicleKind's values) and "pedestrian".
+MODELS: dict[str, Model] = {
+    "car": CAR_MODEL,
+    "van": VAN_MODEL,
+    "pickup": PICKUP_MODEL,
+    "bus": BUS_MODEL,
+    "truck": TRUCK_MODEL,
+    "motorcycle": MOTORCYCLE_MODEL,
+    "bicycle": BICYCLE_MODEL,
+    "pedestrian": PEDESTRIAN_MODEL,
+}
+_BY_BODY = {m.body: m for m in MODELS.values()}
 
 CAR = CAR_MODEL.body
 PEDESTRIAN = PEDESTRIAN_MODEL.body
@@ -99,5 +194,10 @@ REAR_OVERHANG = CAR_MODEL.rear_overhang
 
 
 def model(body: Body) -> Model:
-    """The model of a body's kind; a vehicle class with no row of its own is modelled as a car."""
-    return MODELS.get(body.vclass, CAR_MODEL)
+    """The model whose body this is; a body of no kind's own (one a test made) is modelled as a car."""
+    return _BY_BODY.get(body, CAR_MODEL)
+
+
+def model_of(kind: str) -> Model:
+    """The model of a kind named as the IR names it (`bus`, `pedestrian`); unknown kinds are staged as a car."""
+    return MODELS.get(kind, CAR_MODEL)

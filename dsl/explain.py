@@ -12,7 +12,7 @@ import hashlib
 from collections.abc import Iterable, Iterator
 
 from sovarc.dsl.errors import Diagnostic, InputError
-from sovarc.dsl.ir import Evidence, Provenance, Scenario, Unknown
+from sovarc.dsl.ir import Evidence, Provenance, Role, Scenario, Unknown
 from sovarc.dsl.printer import format_action, format_speed, format_words
 from sovarc.dsl.span import Source, Span
 
@@ -95,7 +95,8 @@ def _facts(s: Scenario) -> Iterator[tuple[str, list[tuple[str, str, bool]]]]:
         ],
     )
     for p in s.participants:
-        rows = [
+        rows = [row(f"{p.id}.kind", p.kind, str(p.kind))] if p.role is Role.VEHICLE else []
+        rows += [
             row(f"{p.id}.heading", p.heading, str(p.heading)),
             row(f"{p.id}.lane", p.lane, str(p.lane)),
             row(f"{p.id}.speed", p.speed, format_speed(p.speed)),

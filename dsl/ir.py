@@ -45,6 +45,7 @@ class Lighting(StrEnum):
     DARK = "dark"
     DAYLIGHT = "daylight"
     STREET_LIGHTS = "street_lights"  # road lit by lamps; usually together with dark
+    TWILIGHT = "twilight"  # dawn or dusk: the sun at or just below the horizon
 
 
 class RoadKind(StrEnum):
@@ -70,6 +71,18 @@ class Role(StrEnum):
     PEDESTRIAN = "pedestrian"
 
 
+class VehicleKind(StrEnum):
+    """What a vehicle is; its body and limits are the vehicle model's row of that kind."""
+
+    CAR = "car"
+    VAN = "van"  # also minivans
+    PICKUP = "pickup"
+    BUS = "bus"
+    TRUCK = "truck"  # a heavy truck, tractor-trailer or box truck
+    MOTORCYCLE = "motorcycle"  # also mopeds and scooters with an engine
+    BICYCLE = "bicycle"  # the cyclist and the bicycle, one body
+
+
 class Side(StrEnum):
     LEFT = "left"
     RIGHT = "right"
@@ -88,6 +101,8 @@ class ActionKind(StrEnum):
     RETROGRADE = "retrograde"
     CROSS = "cross"
     WALK = "walk"
+    REVERSE = "reverse"
+    PARKED = "parked"
 
 
 class CrashType(StrEnum):
@@ -130,6 +145,14 @@ ACTION_SPECS: Mapping[ActionKind, ActionSpec] = MappingProxyType(
         ActionKind.DRIVE_OFF: ActionSpec(_VEHICLE, "none", "leave the road to a driveway, parking lot or shoulder"),
         ActionKind.RETROGRADE: ActionSpec(
             _VEHICLE, "none", "drive in a lane of the opposite direction, e.g. across a double yellow line"
+        ),
+        ActionKind.REVERSE: ActionSpec(
+            _VEHICLE,
+            "none",
+            "drive backwards along the lane; after `parked`, back out of the parking space into the lane",
+        ),
+        ActionKind.PARKED: ActionSpec(
+            _VEHICLE, "none", "stand parked at the kerb or in a parking lane, off the travel lane (first action only)"
         ),
         ActionKind.CROSS: ActionSpec(_PEDESTRIAN, "none", "walk across the road"),
         ActionKind.WALK: ActionSpec(_PEDESTRIAN, "none", "walk along the road"),
@@ -196,17 +219,19 @@ FACT_PATH = re.compile(
     r"(?P<head>[A-Za-z_][A-Za-z0-9_\-]*)\.(?P<field>[A-Za-z_][A-Za-z0-9_]*)(?:\[(?P<index>[0-9]+)\])?"
 )
 _SECTIONS = {"environment": 0, "road": 1, "crash": 3}
-# Fields in the order the printer writes them (the node definitions below, kept in step by a test).
-FIELD_ORDER = {
-    f: i
-    for fields in (
-        ("weather", "lighting"),
-        ("kind", "lanes", "speed_limit"),
-        ("role", "heading", "lane", "speed", "actions"),
-        ("type", "striker", "victim"),
-    )
-    for i, f in enumerate(fields)
-}
+_PARTICIPANT = 2
+# Fields of each section in the order the printer writes them (kept in step with it by a test).
+FIELD_ORDER: Mapping[int, Mapping[str, int]] = MappingProxyType(
+    {
+        section: MappingProxyType({f: i for i, f in enumerate(names)})
+        for section, names in (
+            (0, ("weather", "lighting")),
+            (1, ("kind", "lanes", "speed_limit")),
+            (_PARTICIPANT, ("role", "kind", "heading", "lane", "speed", "actions")),
+            (3, ("type", "striker", "victim")),
+        )
+    }
+)
 
 
 def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, int | str, int, str, int]:
@@ -215,11 +240,13 @@ def fact_key(path: str, order: Mapping[str, int] | None = None) -> tuple[int, in
     m = FACT_PATH.fullmatch(path)
     if m is None:
         return (4, path, 0, "", 0)
-    head, index, rank = m["head"], int(m["index"] or 0), FIELD_ORDER.get(m["field"], len(FIELD_ORDER))
+    head, index = m["head"], int(m["index"] or 0)
+    section = _SECTIONS.get(head, _PARTICIPANT)
+    rank = FIELD_ORDER[section].get(m["field"], len(FIELD_ORDER[section]))
     if head in _SECTIONS:
-        return (_SECTIONS[head], "", rank, m["field"], index)
+        return (section, "", rank, m["field"], index)
     who: int | str = order.get(head, len(order)) if order is not None else head
-    return (2, who, rank, m["field"], index)
+    return (section, who, rank, m["field"], index)
 
 
 @dataclass(frozen=True)
@@ -295,6 +322,9 @@ class Participant:
     lane: int | Unknown = UNKNOWN  # counted from the right-most lane of its direction, from 1
     speed: Speed | Unknown = UNKNOWN
     actions: tuple[Action, ...] | Unknown = ()  # unknown: the report does not say what it did
+    # A vehicle's kind (unknown: the report does not say; it is staged as a car). Last, so that positional
+    # construction and the JSON form of earlier scenarios keep their order.
+    kind: VehicleKind | Unknown = UNKNOWN
     meta: Meta = META
 
     @property

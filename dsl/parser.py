@@ -43,6 +43,7 @@ from sovarc.dsl.ir import (
     Speed,
     SpeedUnit,
     Unknown,
+    VehicleKind,
     Weather,
 )
 from sovarc.dsl.span import Source, Span
@@ -319,6 +320,9 @@ class _Builder(Transformer[Token, Any]):
         return self._block(Road, meta, c)
 
     # --- participants -------------------------------------------------------------
+    def vehicle_kind(self, meta: Any, c: list[Token]) -> _Field:
+        return self._field("kind", meta, self._enum(VehicleKind, c[1], "vehicle kind"))
+
     def heading(self, meta: Any, c: list[Token]) -> _Field:
         return self._field("heading", meta, self._enum(Heading, c[1], "heading"))
 

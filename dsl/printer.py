@@ -133,7 +133,10 @@ def _participant(w: _Writer, p: Participant) -> None:
     comments = p.meta.comments
     w.line(1, f"{p.role} {p.id} {{", comments.get(""))
     for key, text, trivia in _fields(
-        p, [("heading", _word(p.heading)), ("lane", _word(p.lane)), ("speed", format_speed(p.speed))]
+        p,
+        # An unknown kind is not written: most reports do not say it, and files from before kinds stay canonical.
+        [("kind", _word(p.kind))] * (not isinstance(p.kind, Unknown))
+        + [("heading", _word(p.heading)), ("lane", _word(p.lane)), ("speed", format_speed(p.speed))],
     ):
         w.line(2, f"{key} {text}", trivia)
     if isinstance(p.actions, Unknown):

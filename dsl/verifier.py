@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import fields
 
 from sovarc.dsl.errors import Diagnostic, Severity, VerifyError
-from sovarc.dsl.ir import ACTION_SPECS, FACT_PATH, ActionKind, Scenario, Side, Unknown
+from sovarc.dsl.ir import ACTION_SPECS, FACT_PATH, ActionKind, Role, Scenario, Side, Unknown
 from sovarc.dsl.parser import is_plain_name
 
 Rule = Callable[[Scenario], Iterator[Diagnostic]]
@@ -119,6 +119,28 @@ def _actions_fit(s: Scenario) -> Iterator[Diagnostic]:
                 yield Diagnostic(f"{a.kind}(to: ...) takes a lane number, not a side", a.meta.where("to"))
 
 
+def _kind_of_vehicle(s: Scenario) -> Iterator[Diagnostic]:
+    for p in s.participants:
+        if p.role is Role.PEDESTRIAN and not isinstance(p.kind, Unknown):
+            yield Diagnostic(
+                f"{p.id} is a pedestrian, which has no vehicle kind",
+                p.meta.where("kind"),
+                hint="a cyclist is `vehicle ID { kind bicycle ... }`",
+            )
+
+
+def _parked_first(s: Scenario) -> Iterator[Diagnostic]:
+    """`parked` is where a vehicle starts: its first action. What follows is how it leaves (`reverse`, `drive_into`)."""
+    for p in s.participants:
+        for n, a in enumerate(p.known_actions):
+            if a.kind is ActionKind.PARKED and n > 0:
+                yield Diagnostic(
+                    f"{p.id} is parked only after {p.known_actions[n - 1].kind}",
+                    a.meta.span,
+                    hint="`parked` is a vehicle's first action; a vehicle that parks and stays is `stop`",
+                )
+
+
 def _sha256_form(s: Scenario) -> Iterator[Diagnostic]:
     p = s.provenance
     if p is not None and not isinstance(p.sha256, Unknown) and not _SHA256.fullmatch(p.sha256):
@@ -170,6 +192,8 @@ RULES: tuple[Rule, ...] = (
     _speeds_positive,
     _lanes_in_road,
     _actions_fit,
+    _kind_of_vehicle,
+    _parked_first,
     _sha256_form,
     _assumed_paths,
     _evidence_paths,

@@ -69,3 +69,10 @@ def test_json_form_of_changes() -> None:
         "new": "turn_right",
         "message": "V1 action 1: turn_left → turn_right",
     }
+
+
+def test_kind_and_twilight_are_facts_the_diff_names() -> None:
+    kinded = BASE.replace("  vehicle V2 {\n", "  vehicle V2 {\n    kind bicycle\n")
+    assert changed(BASE, kinded) == ["V2.kind: unknown → bicycle"]
+    dusk = BASE.replace("lighting daylight", "lighting twilight")
+    assert changed(BASE, dusk) == ["environment.lighting: daylight → twilight"]

@@ -26,6 +26,7 @@ from sovarc.dsl.ir import (
     Side,
     Speed,
     SpeedUnit,
+    VehicleKind,
     Weather,
 )
 
@@ -84,6 +85,7 @@ participants = st.builds(
     maybe(st.integers(1, 9)),
     maybe(speeds),
     maybe(st.lists(actions, max_size=5).map(tuple)),
+    maybe(st.sampled_from(VehicleKind)),
 )
 paths = st.tuples(names, names).map(".".join)
 fact_paths = st.one_of(

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sovarc.dsl import Severity, from_json, parse, to_json, verify
+from sovarc.dsl import Severity, from_json, parse, to_json, to_text, verify
 
 from tests.conftest import EXAMPLES
 
@@ -54,3 +54,26 @@ def test_ids_from_json_must_be_writable_as_text() -> None:
     data["crash"]["striker"] = "Vehicle 1"
     found = verify(from_json(data))
     assert [d.message for d in found] == ["participant id 'Vehicle 1' is not a plain name"]
+
+
+def test_a_kind_is_for_vehicles_and_parked_comes_first() -> None:
+    """A vehicle's kind and the parked start (issue 20): a pedestrian has no kind; `parked` is a first action."""
+    kinded = BASE.replace("  vehicle V2 {\n", "  vehicle V2 {\n    kind bus\n")
+    assert messages(kinded) == []
+    walker = BASE.replace("  vehicle V2 {\n", "  pedestrian V2 {\n    kind bus\n")
+    walker = walker.replace("      stop\n", "      walk\n")
+    assert messages(walker) == ["error: V2 is a pedestrian, which has no vehicle kind"]
+    assert messages(BASE.replace("      stop\n", "      parked\n      reverse\n")) == []
+    late = BASE.replace("      stop\n", "      stop\n      parked\n")
+    assert messages(late) == ["error: V2 is parked only after stop"]
+    assert messages(BASE.replace("      stop\n", "      reverse(to: 1)\n")) == ["error: reverse takes no target lane"]
+
+
+def test_an_unknown_kind_is_not_written_and_a_known_one_is() -> None:
+    """Files from before kinds keep their canonical form; a stated kind prints right after the role line."""
+    assert to_text(parse(BASE)) == BASE
+    kinded = BASE.replace("  vehicle V2 {\n", "  vehicle V2 {\n    kind motorcycle\n")
+    assert to_text(parse(kinded)) == kinded
+    assert to_text(parse(BASE.replace("    heading east\n", "    heading east\n    kind truck\n", 1))) == BASE.replace(
+        "  vehicle V1 {\n", "  vehicle V1 {\n    kind truck\n"
+    )
