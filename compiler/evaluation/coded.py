@@ -42,8 +42,8 @@ _LIGHT = {
     "Daylight": (Lighting.DAYLIGHT,),
     "Dark, but lighted": (Lighting.DARK, Lighting.STREET_LIGHTS),
     "Dark": (Lighting.DARK,),
-    "Dusk": (Lighting.DARK,),  # the ground truth's convention: dark is dusk or night
-    "Dawn": (Lighting.DARK,),
+    "Dusk": (Lighting.TWILIGHT,),
+    "Dawn": (Lighting.TWILIGHT,),
 }
 _WEATHER = {
     "Clear--No adverse conditions": Weather.CLEAR,

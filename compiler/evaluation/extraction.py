@@ -8,18 +8,22 @@ truth leaves `unknown` must be `unknown`). As in the paper, an attribute is
 scored per report, and DrivingActions is the sequence of behaviours: a
 turn's or lane change's target lane (`turn_left(to: 2)`) is not compared,
 since lanes are what RunningLanes measures.
+
+The ground truth's vocabulary is SoVAR's, which has no twilight and no
+parked vehicle: it writes dusk and dawn as dark, and a parked vehicle as
+stopped. Ours is compared in its terms (`in_truth_terms`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import SovarcError, read_source
-from sovarc.dsl.ir import Participant, Scenario, Speed, Unknown
+from sovarc.dsl.ir import ActionKind, Lighting, Participant, Scenario, Speed, Unknown
 
 ATTRIBUTES: tuple[str, ...] = (
     "Weather",
@@ -80,11 +84,30 @@ def _kinds(p: Participant) -> object:
     return p.actions if isinstance(p.actions, Unknown) else tuple(a.kind.value for a in p.actions)
 
 
+_TRUTH_WORDS = {Lighting.TWILIGHT: Lighting.DARK, ActionKind.PARKED: ActionKind.STOP}
+
+
+def in_truth_terms(s: Scenario) -> Scenario:
+    """The scenario in the ground truth's vocabulary (see the module): twilight is dark, parked is a stop."""
+    light = s.environment.lighting
+    if not isinstance(light, Unknown):
+        s = replace(s, environment=replace(s.environment, lighting=tuple({_TRUTH_WORDS.get(x, x) for x in light})))
+    people = tuple(
+        replace(p, actions=tuple(replace(a, kind=_TRUTH_WORDS.get(a.kind, a.kind)) for a in p.actions))
+        if not isinstance(p.actions, Unknown)
+        else p
+        for p in s.participants
+    )
+    return replace(s, participants=people)
+
+
 def score_case(got: Scenario, truth: Scenario) -> dict[str, tuple[bool, str]]:
     """attribute -> (right?, what differed)."""
 
     def same(a: object, b: object) -> tuple[bool, str]:
         return a == b, "" if a == b else f"{_show(a)} ≠ {_show(b)}"
+
+    got = in_truth_terms(got)
 
     return {
         "Weather": same(got.environment.weather, truth.environment.weather),

@@ -6,8 +6,8 @@ partner (CP), each with a pre-crash movement and the areas of it in contact. The
 the fleets, not by NHTSA's coders, so these fields are an independent truth for a front end that reads them.
 
 The mapping (one function per field, each saying what it cannot map):
-- lighting: Daylight is {daylight}; Dark - Lighted is {dark, street_lights}; Dark - Not Lighted, Dark -
-  Unknown Lighting and Dawn / Dusk are {dark} (the IR's dark is "dusk or night"); anything else is not scored;
+- lighting: Daylight is {daylight}; Dark - Lighted is {dark, street_lights}; Dark - Not Lighted and Dark -
+  Unknown Lighting are {dark}; Dawn / Dusk is {twilight}; anything else is not scored;
 - weather: the set of flags set (Clear, Cloudy, Rain, Snow, Fog/Smoke, Severe Wind); Unknown or Other only
   is not scored;
 - speed limit: the posted limit in mph; blank or 0 is not scored;
@@ -17,13 +17,17 @@ The mapping (one function per field, each saying what it cannot map):
   follow_lane or go_across; Stopped is stop; Making Left / Right / U-Turn, Changing Lanes (and Merging),
   Entering Traffic (drive_into), Crossing into Opposing Lane and Traveling Wrong Way (retrograde), Lane /
   Road Departure (drive_off or retrograde), Passing (follow_lane or change_lane), a pedestrian Crossing
-  Roadway (cross) or Moving on Sidewalk (walk). Backing, Parked and Parking Maneuver are movements the IR
-  cannot say yet: scored "not expressible", apart, never as a miss. Other / Unknown are not scored;
+  Roadway (cross) or Moving on Sidewalk (walk), Backing (reverse), Parked (parked, or stop: NHTSA
+  codes a vehicle standing in its lane for a passenger as parked), a Parking Maneuver
+  (reverse, drive_into or drive_off: out of a space or into one). Other / Unknown are not scored;
 - crash type and striker from the contact areas: a party's front is Front, Front Left or Front Right; its
   rear Rear, Rear Left or Rear Right; its side Left or Right. The striker is the party whose front is in
   contact when the other's is not; the crash type is the other's part (rear: rear_end, side: side), and
-  front to front is frontal with no striker scored. A crash in which either party was backing is not
-  expressible (the IR has no reverse: the contact areas would name the wrong striker).
+  front to front is frontal with no striker scored. A party backing leads with its rear: its rear against
+  the other's front is rear_end, against the other's side is side, and it is the striker;
+- the crash partner's kind, from "Crash With": Passenger Car and SUV are car, Pickup Truck pickup, Van van,
+  Bus bus, Heavy Truck truck, Motorcycle motorcycle, Non-Motorist: Cyclist bicycle; the others (a
+  pedestrian, a first responder's vehicle of any kind) are not scored.
 
 The automated vehicle is SV. The front end's stated rule makes it V1; the crash partner is V1's partner in
 the crash, else the other participant.
@@ -38,7 +42,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from sovarc.compiler.frontend.refusals import says_impact
-from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Participant, Scenario, Speed, Unknown, Weather
+from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Participant, Scenario, Speed, Unknown, VehicleKind, Weather
 
 # Crash partners the IR holds as road users, so the crash has two parties.
 TWO_PARTY = frozenset(
@@ -51,6 +55,7 @@ TWO_PARTY = frozenset(
         "Bus",
         "Motorcycle",
         "First Responder Vehicle",
+        "Non-Motorist: Cyclist",
         "Non-Motorist: Pedestrian",
     )
 )
@@ -104,7 +109,7 @@ _LIGHTING = {
     "Dark - Lighted": frozenset((Lighting.DARK, Lighting.STREET_LIGHTS)),
     "Dark - Not Lighted": frozenset((Lighting.DARK,)),
     "Dark - Unknown Lighting": frozenset((Lighting.DARK,)),
-    "Dawn / Dusk": frozenset((Lighting.DARK,)),
+    "Dawn / Dusk": frozenset((Lighting.TWILIGHT,)),
 }
 _WEATHER = {
     "Weather - Clear": Weather.CLEAR,
@@ -131,9 +136,21 @@ _MOVEMENT: dict[str, frozenset[ActionKind] | None] = {
     "NM Crossing Roadway": frozenset((_K.CROSS,)),
     "NM Moving on Sidewalk": frozenset((_K.WALK,)),
     "NM in Roadway - Other": frozenset((_K.WALK, _K.CROSS)),
-    "Backing": None,
-    "Parked": None,
-    "Parking Maneuver": None,
+    "Backing": frozenset((_K.REVERSE,)),
+    # NHTSA codes a vehicle standing for a passenger pick-up or drop-off as Parked, in its lane or at the kerb;
+    # its narratives say "stopped in-lane for a drop-off", which the IR says as a stop.
+    "Parked": frozenset((_K.PARKED, _K.STOP)),
+    "Parking Maneuver": frozenset((_K.REVERSE, _K.DRIVE_INTO, _K.DRIVE_OFF)),
+}
+_PARTNER_KIND = {
+    "Passenger Car": VehicleKind.CAR,
+    "SUV": VehicleKind.CAR,
+    "Pickup Truck": VehicleKind.PICKUP,
+    "Van": VehicleKind.VAN,
+    "Bus": VehicleKind.BUS,
+    "Heavy Truck": VehicleKind.TRUCK,
+    "Motorcycle": VehicleKind.MOTORCYCLE,
+    "Non-Motorist: Cyclist": VehicleKind.BICYCLE,
 }
 _FRONT = ("Front", "Front Left", "Front Right")
 _REAR = ("Rear", "Rear Left", "Rear Right")
@@ -179,10 +196,31 @@ def _part(areas: set[str]) -> str | None:
     return "rear" if rear and not side else "side" if side and not rear else None
 
 
+def partner_kind(row: dict[str, str]) -> Expected:
+    said = _PARTNER_KIND.get(row.get("Crash With", ""))
+    return Expected(frozenset((said,))) if said else _SKIP
+
+
+def _backing(row: dict[str, str]) -> tuple[Expected, Expected]:
+    """(crash type, striker) of a crash one party backed into: its rear leads (see the module)."""
+    backing = [party for party in ("SV", "CP") if row.get(f"{party} Pre-Crash Movement") == "Backing"]
+    if len(backing) != 1:
+        return _SKIP, _SKIP
+    party = backing[0]
+    other = _areas(row, "CP" if party == "SV" else "SV")
+    if not _areas(row, party) & set(_REAR):
+        return _SKIP, _SKIP
+    if other & set(_FRONT) and not other & set(_SIDE):
+        return Expected(frozenset((CrashType.REAR_END,))), Expected(frozenset((party,)))
+    if _part(other) == "side":
+        return Expected(frozenset((CrashType.SIDE,))), Expected(frozenset((party,)))
+    return _SKIP, _SKIP
+
+
 def contact(row: dict[str, str]) -> tuple[Expected, Expected]:
     """(crash type, striker) from the contact areas; the striker as "SV" or "CP"."""
     if "Backing" in (row.get("SV Pre-Crash Movement"), row.get("CP Pre-Crash Movement")):
-        return _INEXPRESSIBLE, _INEXPRESSIBLE
+        return _backing(row)
     sv, cp = _areas(row, "SV"), _areas(row, "CP")
     sv_front, cp_front = bool(sv & set(_FRONT)), bool(cp & set(_FRONT))
     if sv_front and cp_front:
@@ -203,6 +241,7 @@ def expected(row: dict[str, str]) -> dict[str, Expected]:
         "striker": striker,
         "SV movement": movement(row, "SV"),
         "CP movement": movement(row, "CP"),
+        "CP kind": partner_kind(row),
         "lighting": lighting(row),
         "weather": weather(row),
         "speed limit": speed_limit(row),
@@ -215,6 +254,7 @@ ATTRIBUTES: tuple[str, ...] = (
     "striker",
     "SV movement",
     "CP movement",
+    "CP kind",
     "lighting",
     "weather",
     "speed limit",
@@ -252,6 +292,7 @@ def read_facts(s: Scenario) -> dict[str, object]:
         "striker": role.get(s.crash.striker, s.crash.striker) if isinstance(s.crash.striker, str) else "unknown",
         "SV movement": _last_action(sv),
         "CP movement": _last_action(cp),
+        "CP kind": "missing" if cp is None else cp.kind,
         "lighting": env.lighting if isinstance(env.lighting, Unknown) else frozenset(env.lighting),
         "weather": env.weather if isinstance(env.weather, Unknown) else frozenset(env.weather),
         "speed limit": mph,

@@ -26,6 +26,32 @@ _TURN = (
     r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
 )
 _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
+    # Backing: "backed out of a driveway", "was reversing", "began to back up", "put the car in reverse".
+    # "Traffic was backed up" is a queue, not a move.
+    (
+        ActionKind.REVERSE,
+        re.compile(
+            r"\b(?:back(?:ed|ing)|revers(?:ed|ing|es|e)) (?:out|into|in|toward|towards|away|from|down|across|onto"
+            r"|through|along|around|to|straight)\b|(?<!was )(?<!were )(?<!\w-)\bback(?:ed|ing) up\b"
+            r"|\b(?:began|begin|started|start|attempt\w*|tried|trying) (?:to )?(?:back|revers)\w*"
+            r"|\b(?:in|into) reverse\b|\breversing\b|\bwas backing\b"
+            # "reversed, and", "reversed at a low speed": the verb on its own (not "reversed direction")
+            r"|\breversed\b(?! (?:its |the )?(?:direction|course|decision|order))"
+            # "began to roll backwards", "moved backward", "rolled back into"
+            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|came|travel\w*|slid\w*)(?: \w+)? backwards?\b"
+            r"|\brolled back\b",
+            re.I,
+        ),
+    ),
+    # Parked: where it started, at the kerb or in a parking space ("was parked", "out of a parking space").
+    (
+        ActionKind.PARKED,
+        re.compile(
+            r"\bparked\b|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
+            r"|parallel[- ]parking (?:space|spot))",
+            re.I,
+        ),
+    ),
     (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
     (ActionKind.TURN_LEFT, re.compile(_TURN.format("left"), re.I)),
     (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
@@ -61,7 +87,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|parked)"
             r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|pull(?:ed|ing)? out of|proceed(?:ed|ing)? out of"
-            r"|back(?:ed|ing)? out of|out of) (?:a|the|an|its) (?:private )?"
+            r"|(?<!backed )(?<!backing )(?<!reversed )(?<!reversing )out of) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
@@ -97,7 +123,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
-            r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b"
+            r"|\bstationary\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
             r"|\bto a (?:complete |full |sudden |quick |near )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
@@ -199,13 +225,14 @@ _TRAVELLING = re.compile(
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
-    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b",
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b|\bback(?:ed|ing)?\b(?! of)"
+    r"|\brevers|\bbackwards?\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
 _MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
-_STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
+_STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO, ActionKind.PARKED)
 _TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
 _MANOEUVRES = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN, ActionKind.CHANGE_LANE)
 
@@ -372,7 +399,19 @@ def read_actions_at(
     ]
     if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
         # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
-        found = [(at, a) for at, a in found if at >= entered[0] or a.kind is ActionKind.STOP]
+        found = [(at, a) for at, a in found if at >= entered[0] or a.kind in (ActionKind.STOP, ActionKind.PARKED)]
+    # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
+    # is the reverse, not a drive into the road as well
+    backs = [at for at, a in found if a.kind is ActionKind.REVERSE]
+    found = [
+        (at, a) for at, a in found if a.kind is not ActionKind.DRIVE_INTO or not any(0 <= at - b <= 40 for b in backs)
+    ]
+    if any(a.kind is ActionKind.PARKED for _, a in found):
+        # Parked is where it started, wherever the report says so ("backed out of a parking space"); standing
+        # there is no stop of its own.
+        first = min(at for at, _ in found)
+        moves = [(at, a) for at, a in found if a.kind not in (ActionKind.PARKED, ActionKind.STOP)]
+        found = [(first - 1, Action(ActionKind.PARKED)), *moves]
     if (
         found
         and found[-1][1].kind is ActionKind.STOP

@@ -15,7 +15,7 @@ from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Provenanc
 
 Default = Callable[[Scenario], tuple[Scenario, list[str]]]
 
-_STANDING_STARTS = (ActionKind.STOP, ActionKind.DRIVE_INTO)
+_STANDING_STARTS = (ActionKind.STOP, ActionKind.DRIVE_INTO, ActionKind.PARKED)
 
 
 def lane_on_two_lane_road(s: Scenario) -> tuple[Scenario, list[str]]:
@@ -68,7 +68,7 @@ def heading_from_crash(s: Scenario) -> tuple[Scenario, list[str]]:
     return replace(s, participants=people), [f"{other.id}.heading"]
 
 
-_STRAIGHT_ON = (ActionKind.FOLLOW_LANE, ActionKind.STOP, ActionKind.CHANGE_LANE)
+_STRAIGHT_ON = (ActionKind.FOLLOW_LANE, ActionKind.STOP, ActionKind.PARKED, ActionKind.CHANGE_LANE)
 
 DEFAULTS: tuple[Default, ...] = (lane_on_two_lane_road, victim_of_two, heading_from_crash)
 

@@ -19,15 +19,17 @@ from sovarc.compiler.frontend.sentences import sentences
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
 _MODS = r"(?:" + _STOP + r"[\w.'-]+ ){0,3}?"
-# Road users by kind, longest first; the kind the IR gives each (a cyclist is read as a pedestrian, noted).
+# Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle).
 _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
     r"tractor[- ]trailer|school bus|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
-    r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist"
+    r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
 )
-_PEOPLE = frozenset(("pedestrian", "bicyclist", "cyclist", "pedalcyclist"))
-_USER = re.compile(r"\b(?:an?|the|another|one) " + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])", re.I)
+_PEOPLE = frozenset(("pedestrian",))
+# A kind's noun that modifies another names a place or a thing, not a road user: "the bike lane", "a bus stop".
+_NOT_USER = r"(?! (?:lanes?|paths?|routes?|stops?|shelters?|stations?|racks?|wash|park|parking|share|corrals?)\b)"
+_USER = re.compile(r"\b(?:an?|the|another|one) " + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER, re.I)
 _OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist|driver)\b", re.I)
 
 # The automated vehicle: "a Waymo Autonomous Vehicle", "the Waymo AV", "the Cruise AV", "the ADS vehicle",
@@ -69,11 +71,14 @@ _THING = re.compile(
 def _replace_phrase(text: str, phrase: str, pid: str) -> str:
     """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id."""
     return re.sub(
-        r"\b(?:an?|the|another|that|this) " + _MODS + re.escape(phrase) + r"\b(?![\w-])", pid, text, flags=re.I
+        r"\b(?:an?|the|another|that|this) " + _MODS + re.escape(phrase) + r"\b(?![\w-])" + _NOT_USER,
+        pid,
+        text,
+        flags=re.I,
     )
 
 
-def _labels(text: str) -> tuple[str, str] | None:
+def _labels(text: str) -> tuple[str, str, dict[str, str]] | None:
     """The report's own labels: "a Zoox vehicle (Vehicle 1)" names V1 "the Zoox vehicle" from then on."""
     found = [m for m in _LABELLED.finditer(text) if not re.fullmatch(r"[VP]\d", m.group(1))]
     if not found:
@@ -94,7 +99,11 @@ def _labels(text: str) -> tuple[str, str] | None:
         if len(heads[phrase]) == 1 and not re.fullmatch(r"vehicle|car", phrase):
             text = _replace_phrase(text, phrase, next(iter(heads[phrase])))
     named = ", ".join(f"{pid} '{p}'" for p, pid in sorted(words.items(), key=lambda kv: kv[1]))
-    return text, f"participants named by the report's own labels ({named})"
+    said: dict[str, str] = {}
+    for phrase, pid in words.items():
+        if len(phrase) > len(said.get(pid, "")):
+            said[pid] = phrase  # the longest words for each: "passenger car", not "car"
+    return text, f"participants named by the report's own labels ({named})", said
 
 
 def _automated(text: str) -> tuple[str, str] | None:
@@ -151,29 +160,39 @@ def _others(text: str) -> list[tuple[str, str]]:
 def label_parties(text: str) -> tuple[str, str | None]:
     """The text with its parties numbered (see the module), and the note saying how; unchanged when the
     report numbers them itself."""
+    named, note, _ = parties(text)
+    return named, note
+
+
+def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
+    """`label_parties`, and the words each party numbered here was first named by ({"V2": "a passenger car"}),
+    which say what kind of road user it is."""
     if re.search(r"\bV1\b", _LABEL.sub(" ", text)):
-        return text, None  # numbered outside any labels: the report's own numbering
+        return text, None, {}  # numbered outside any labels: the report's own numbering
     if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
         # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
         automated = _automated(text) if not _LABELLED.search(text) else None
         if automated is None:
-            return text, None
-        return automated[0], f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
+            return text, None, {}
+        note = f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
+        return automated[0], note, {"V1": automated[1]}
     labelled = _labels(text)
     if labelled is not None:
         return labelled
     automated = _automated(text)
     if automated is None:
-        return text, None
+        return text, None, {}
     text, said = automated
     others = _others(text)
     named: list[str] = []
     counts = {"V": 1, "P": 0}
+    words_of = {"V1": said}
     for kind, words in others:
         role = "P" if kind in _PEOPLE else "V"
         counts[role] += 1
         pid = f"{role}{counts[role]}"
         named.append(f"{pid} '{words}'")
+        words_of[pid] = words
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
             text = _replace_phrase(text, words_for, pid)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
@@ -183,7 +202,7 @@ def label_parties(text: str) -> tuple[str, str | None]:
     note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
     if named:
         note += "; the other road users in the first impact are " + ", ".join(named)
-    return text, note
+    return text, note, words_of
 
 
 def partner_refusal(text: str) -> str | None:

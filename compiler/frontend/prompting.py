@@ -45,6 +45,9 @@ VEHICLE_WORDS = {
     "retrograde": "wrong_way",
 }
 PEDESTRIAN_WORDS = {"cross": "cross", "walk": "walk"}
+# Read by the rules only: no example in the prompt teaches them yet, and a word the examples never show would
+# be a guess. Where the rules read one, the settlement keeps it (the model cannot contradict it).
+RULES_ONLY = frozenset(("reverse", "parked"))
 ACTION_OF = {w: a for a, w in (VEHICLE_WORDS | PEDESTRIAN_WORDS).items()}
 VEHICLE_ACTIONS = tuple(VEHICLE_WORDS)
 PEDESTRIAN_ACTIONS = tuple(PEDESTRIAN_WORDS)

@@ -18,12 +18,15 @@ from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
+from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
+from sovarc.compiler.frontend.names import parties
 from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.text import (
     describes_impact,
     first_impact,
     impact_clause,
+    number_vehicles,
     participants,
     prepare,
     sentences,
@@ -32,6 +35,7 @@ from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
     ActionKind,
+    Crash,
     CrashType,
     Environment,
     Heading,
@@ -64,8 +68,10 @@ _WEATHER = [
 # "A dark colored Nissan", "a dark gray SUV": a colour of a vehicle, not the scene's lighting.
 _DARK = (
     r"\bdark(?:ness)?\b(?![- ](?:colou?red|gr[ae]y|blue|green|red|brown|silver|tinted|painted|sedan|suv|car))"
-    r"|\bnight(?:time)?\b|\bdusk\b|\bdawn\b|\bevening\b"
+    r"|\bnight(?:time)?\b|\bevening\b"
 )
+# Dawn and dusk: the sun at or just below the horizon (twilight), neither day nor night.
+_TWILIGHT = r"\bdusk\b|\bdawn\b|\btwilight\b|\bsunset\b|\bsunrise\b|\bdaybreak\b"
 _LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
 _DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
 _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
@@ -95,6 +101,8 @@ def read_environment(text: str) -> tuple[Environment, list[Spot]]:
     lighting: list[Lighting] = []
     if m := re.search(_DAYLIGHT, low):  # stated outright, it wins over "the night before" and the like
         lighting.append(Lighting.DAYLIGHT)
+    elif m := re.search(_TWILIGHT, low):
+        lighting.append(Lighting.TWILIGHT)
     elif m := re.search(_LIT, low):
         lighting += [Lighting.DARK, Lighting.STREET_LIGHTS]
     elif m := re.search(_DARK, low):
@@ -356,7 +364,7 @@ def _still_at_impact(sentence: str, pid: str) -> bool:
 
 def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     """The actions up to the last stop, or with a stop added."""
-    stops = [i for i, a in enumerate(actions) if a.kind is ActionKind.STOP]
+    stops = [i for i, a in enumerate(actions) if a.kind in (ActionKind.STOP, ActionKind.PARKED)]
     return actions[: stops[-1] + 1] if stops else (*actions, Action(ActionKind.STOP))
 
 
@@ -442,9 +450,11 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
+    people = _with_kinds(people, text, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
+    crash = _backing_leads(people, crash)
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)
@@ -462,6 +472,44 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     )
     scenario = Scenario(name, provenance, environment, Road(kind, lanes, speed_limit), tuple(people), crash)
     return keep_stated(scenario)
+
+
+def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
+    """A vehicle backing into the impact leads with its rear. The crash readers take a front for the striking
+    face, so "the rear of V2 struck the front of V1" reads as V1's front into V2's rear: the faces of a rear-end
+    crash, with the striker the wrong way round when V2 was the one backing and V1 was not."""
+    if crash.type is not CrashType.REAR_END or not isinstance(crash.striker, str) or not isinstance(crash.victim, str):
+        return crash
+
+    def backing(pid: str) -> bool:
+        q = next((p for p in people if p.id == pid), None)
+        return q is not None and bool(q.known_actions) and q.known_actions[-1].kind is ActionKind.REVERSE
+
+    if backing(crash.victim) and not backing(crash.striker):
+        return replace(crash, striker=crash.victim, victim=crash.striker)
+    return crash
+
+
+def _with_kinds(people: list[Participant], text: str, named: str, spots: list[Spot]) -> list[Participant]:
+    """Each vehicle with the kind the report names it by (see `kinds`), and where that was read: the noun of
+    an appositive, or the participant's first mention, where the words it was named by were."""
+    kinds = stated_kinds(named, parties(number_vehicles(text))[2])
+    out = []
+    for p in people:
+        stated = kinds.get(p.id)
+        if p.role is not Role.VEHICLE or stated is None:
+            out.append(p)
+            continue
+        if isinstance(stated, tuple):
+            kind, start, end = stated
+        elif first := re.search(rf"\b{p.id}\b", named):
+            kind, (start, end) = stated, first.span()
+        else:
+            out.append(p)
+            continue
+        spots.append((f"{p.id}.kind", "named", start, end))
+        out.append(replace(p, kind=kind))
+    return out
 
 
 def _facts(**pieces: Piece | None) -> list[tuple[str, Piece]]:

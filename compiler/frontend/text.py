@@ -17,7 +17,9 @@ _VEHICLE = re.compile(
     r"(?![\w-]))",
     re.IGNORECASE,
 )
-_PEDESTRIAN = re.compile(r"\b(pedestrian|pedalcyclist|bicyclist|cyclist)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
+_PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
+# A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
+_CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
     r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended)\b",
     re.IGNORECASE,
@@ -38,7 +40,21 @@ def normalize_names(text: str) -> str:
     def pedestrian(m: re.Match[str]) -> str:
         return f"P{m.group(2) or 1}"
 
-    return _PEDESTRIAN.sub(pedestrian, number_vehicles(text))
+    return _number_cyclist(_PEDESTRIAN.sub(pedestrian, number_vehicles(text)))
+
+
+def _number_cyclist(text: str) -> str:
+    """ "struck a bicyclist" -> "struck V3, a bicyclist": one unnumbered cyclist gets the next vehicle number;
+    its later mentions ("the cyclist") are it."""
+    found = _CYCLIST.search(text)
+    if found is None or re.search(r"\b[VP]\d,?\s*\(?$", text[: found.start()]):
+        return text  # none, or one the report numbers itself ("P1, a bicyclist,")
+    taken = [int(n) for n in re.findall(r"\bV(\d)\b", text)]
+    pid = f"V{max(taken, default=0) + 1}"
+    text = text[: found.start()] + f"{pid}, {found.group()}," + text[found.end() :]
+    rest = found.start() + len(pid) + 2 + len(found.group()) + 1
+    later = re.compile(r"\b[Tt]he (?:pedal|bi)?cyclist\b(?![\w-])")
+    return text[:rest] + later.sub(pid, text[rest:])
 
 
 def number_vehicles(text: str) -> str:
@@ -187,8 +203,6 @@ def check_narrative(text: str, name: str) -> None:
 def unrepresented(text: str) -> list[str]:
     """What the report says that the scenario IR cannot hold, named for the user instead of dropped silently."""
     found: list[str] = []
-    if re.search(r"\b(?:pedalcyclist|bicyclist|cyclist|bicycle)s?\b", text, re.IGNORECASE):
-        found.append("a cyclist is represented as a pedestrian (the IR has no cyclist role)")
     named = normalize_names(text)
     impacts = [s for s in sentences(named) if describes_impact(s)]
     if len(impacts) > 1:

@@ -27,7 +27,10 @@ from sovarc.targets.verdict import Finding, Verdict
 TARGET = "openscenario:esmini"
 ESMINI_ENV = "ESMINI"
 TIMESTEP = 0.01  # s
-TIME_TOL = 0.3  # s between the planned impact and the player's first collision
+# s between the planned impact and the player's first collision. esmini tests boxes at its own frame
+# step and interpolates poses between trajectory vertices; on 393 plans on CARLA towns its first contact
+# came a median 0.05 s early, 5 % of them 0.43 s or more early.
+TIME_TOL = 0.5
 TIMEOUT_S = 300
 
 # esmini log lines: "4.050: Collision between V1 and V2" (older) or "[4.050] [info] Collision between V1 and V2".

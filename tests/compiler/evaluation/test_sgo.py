@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from sovarc.compiler.cli import main
 from sovarc.compiler.evaluation import sgo
-from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Weather
+from sovarc.dsl.ir import ActionKind, CrashType, Lighting, VehicleKind, Weather
 
 AREAS = ("Front", "Front Left", "Front Right", "Rear", "Rear Left", "Rear Right", "Left", "Right", "Top")
 
@@ -33,7 +33,7 @@ def contact(sv: tuple[str, ...], cp: tuple[str, ...], **fields: str) -> dict[str
 
 def test_lighting_weather_and_limit_map_to_the_ir() -> None:
     assert sgo.lighting(row(Lighting="Dark - Lighted")).accept == {frozenset((Lighting.DARK, Lighting.STREET_LIGHTS))}
-    assert sgo.lighting(row(Lighting="Dawn / Dusk")).accept == {frozenset((Lighting.DARK,))}
+    assert sgo.lighting(row(Lighting="Dawn / Dusk")).accept == {frozenset((Lighting.TWILIGHT,))}
     assert sgo.lighting(row(Lighting="Other, see Narrative")).skip == sgo.NOT_SCORED
     flags = row(**{"Weather - Rain": "Y", "Weather - Cloudy": "Y"})
     assert sgo.weather(flags).accept == {frozenset((Weather.RAINY, Weather.CLOUDY))}
@@ -43,12 +43,19 @@ def test_lighting_weather_and_limit_map_to_the_ir() -> None:
     assert sgo.road_kind(row(**{"Roadway Type": "Street"})).skip == sgo.NOT_SCORED
 
 
-def test_movements_the_ir_cannot_say_are_counted_apart() -> None:
+def test_movements_map_to_actions_backing_and_parked_included() -> None:
     assert sgo.movement(row(**{"SV Pre-Crash Movement": "Stopped"}), "SV").accept == {ActionKind.STOP}
     assert ActionKind.GO_ACROSS in sgo.movement(row(**{"CP Pre-Crash Movement": "Proceeding Straight"}), "CP").accept
-    assert sgo.movement(row(**{"CP Pre-Crash Movement": "Backing"}), "CP").skip == sgo.NOT_EXPRESSIBLE
-    assert sgo.movement(row(**{"SV Pre-Crash Movement": "Parked"}), "SV").skip == sgo.NOT_EXPRESSIBLE
+    assert sgo.movement(row(**{"CP Pre-Crash Movement": "Backing"}), "CP").accept == {ActionKind.REVERSE}
+    assert ActionKind.PARKED in sgo.movement(row(**{"SV Pre-Crash Movement": "Parked"}), "SV").accept
     assert sgo.movement(row(**{"SV Pre-Crash Movement": "Other, see Narrative"}), "SV").skip == sgo.NOT_SCORED
+
+
+def test_the_partner_kind_comes_from_crash_with() -> None:
+    assert sgo.partner_kind(row(**{"Crash With": "Non-Motorist: Cyclist"})).accept == {VehicleKind.BICYCLE}
+    assert sgo.partner_kind(row(**{"Crash With": "SUV"})).accept == {VehicleKind.CAR}
+    assert sgo.partner_kind(row(**{"Crash With": "Heavy Truck"})).accept == {VehicleKind.TRUCK}
+    assert sgo.partner_kind(row(**{"Crash With": "Non-Motorist: Pedestrian"})).skip == sgo.NOT_SCORED
 
 
 @pytest.mark.parametrize(
@@ -68,9 +75,20 @@ def test_contact_areas_give_crash_type_and_striker(
     assert who.accept == ({striker} if striker else set())
 
 
-def test_a_backing_party_makes_the_crash_not_expressible() -> None:
-    crash_type, who = sgo.contact(contact(("Front",), ("Rear",), **{"CP Pre-Crash Movement": "Backing"}))
-    assert crash_type.skip == who.skip == sgo.NOT_EXPRESSIBLE
+@pytest.mark.parametrize(
+    ("sv", "cp", "kind"),
+    [
+        (("Front",), ("Rear",), CrashType.REAR_END),  # backed into the front of the one behind
+        (("Right",), ("Rear Left",), CrashType.SIDE),  # backed out into the other's side
+        (("Rear",), ("Rear",), None),  # rear to rear: not scored
+    ],
+)
+def test_a_backing_party_leads_with_its_rear_and_is_the_striker(
+    sv: tuple[str, ...], cp: tuple[str, ...], kind: CrashType | None
+) -> None:
+    crash_type, who = sgo.contact(contact(sv, cp, **{"CP Pre-Crash Movement": "Backing"}))
+    assert crash_type.accept == ({kind} if kind else set())
+    assert who.accept == ({"CP"} if kind else set())
 
 
 NARRATIVE = (

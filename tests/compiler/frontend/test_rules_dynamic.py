@@ -11,7 +11,7 @@ from sovarc.compiler.frontend.crash import read_sentence
 from sovarc.compiler.frontend.defaults import apply_defaults
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import first_impact, name_parked, normalize_names, resolve_aliases, sentences
-from sovarc.dsl.ir import UNKNOWN, Crash, CrashType, Scenario
+from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Crash, CrashType, Lighting, Scenario
 
 
 def _actions(text: str) -> dict[str, object]:
@@ -135,7 +135,7 @@ def test_an_object_described_on_the_spot_is_its_description() -> None:
             ["follow_lane", "retrograde"],
         ),
         # from a parked position onto the road
-        ("V1 was parked at the curb and pulled out into the travel lane. V2 struck V1.", ["stop", "drive_into"]),
+        ("V1 was parked at the curb and pulled out into the travel lane. V2 struck V1.", ["parked", "drive_into"]),
         # a left-turn lane is a lane, not a turn
         ("V1 was traveling south in the left turn lane. V2 struck V1.", ["follow_lane"]),
         ("V1 changed from the right lane into the left lane. V1 struck V2.", ["follow_lane", "change_lane"]),
@@ -145,6 +145,31 @@ def test_an_object_described_on_the_spot_is_its_description() -> None:
 )
 def test_actions_up_to_the_first_impact(text: str, v1: list[str]) -> None:
     assert _actions(text)["V1"] == v1
+
+
+@pytest.mark.parametrize(
+    ("text", "v2"),
+    [
+        ("V1 was stopped. V2 backed out of a parking space and struck V1.", ["parked", "reverse"]),
+        ("V1 was stopped. V2 reversed out of a driveway and struck the side of V1.", ["follow_lane", "reverse"]),
+        (
+            "V1 was stopped. V2 reversed, and the rear of V2 made contact with the front of V1.",
+            ["follow_lane", "reverse"],
+        ),
+        ("V1 was stopped. V2 began to roll backwards and struck V1.", ["follow_lane", "reverse"]),
+        ("V1 was stopped. V2 was parked in the lane ahead of V1.", ["parked"]),
+        ("V2 was stopped in traffic that was backed up. V1 struck V2.", ["stop"]),  # a queue, not a move
+    ],
+)
+def test_backing_and_parked_are_read_as_reverse_and_parked(text: str, v2: list[str]) -> None:
+    assert _actions(text)["V2"] == v2
+
+
+def test_a_vehicle_backing_into_the_one_behind_it_is_the_striker() -> None:
+    """Its rear leads: "the rear of V2 struck the front of V1" is a rear-end crash that V2 made."""
+    s = _reading("V1 was stopped behind V2. V2 began to back up and the rear of V2 struck the front of V1.")
+    assert s.crash == Crash(CrashType.REAR_END, "V2", "V1")
+    assert s.participant("V2").known_actions[-1].kind is ActionKind.REVERSE
 
 
 def test_a_stopped_striker_at_a_crossing_went_across() -> None:
@@ -314,7 +339,10 @@ def test_an_unnumbered_parked_vehicle_that_is_hit_is_a_participant() -> None:
     text = name_parked("V1 was westbound. The front of V1 struck the left side of a legally parked sedan.")
     assert "V2, a legally parked sedan," in text
     s = _reading("V1 was westbound. The front of V1 struck the left side of a legally parked sedan.")
-    assert (s.crash, s.participant("V2").known_actions[0].kind) == (Crash(CrashType.SIDE, "V1", "V2"), "stop")
+    assert (s.crash, s.participant("V2").known_actions) == (
+        Crash(CrashType.SIDE, "V1", "V2"),
+        (Action(ActionKind.PARKED),),
+    )
 
 
 @pytest.mark.parametrize(
@@ -327,3 +355,33 @@ def test_an_unnumbered_parked_vehicle_that_is_hit_is_a_participant() -> None:
 )
 def test_no_impact_in_these_sentences(sentence: str) -> None:
     assert first_impact([sentence]) == -1
+
+
+def test_a_cyclist_is_a_vehicle_of_kind_bicycle_with_the_kind_read_from_its_words() -> None:
+    s = extract(
+        "The Waymo AV was traveling north at dusk. A cyclist in the bike lane turned left across the path of the "
+        "Waymo AV, and the front of the Waymo AV made contact with the left side of the cyclist.",
+        "c",
+    )
+    assert [(p.id, str(p.role), str(p.kind)) for p in s.participants] == [
+        ("V1", "vehicle", "unknown"),
+        ("V2", "vehicle", "bicycle"),
+    ]
+    assert s.environment.lighting == (Lighting.TWILIGHT,)
+    assert s.crash == Crash(CrashType.SIDE, "V1", "V2")
+
+
+@pytest.mark.parametrize(
+    ("described", "kind"),
+    [
+        ("a 2004 Ford F-150 pickup truck", "pickup"),
+        ("a 2010 Blue Bird school bus", "bus"),
+        ("a 2015 Freightliner tractor-trailer", "truck"),
+        ("a 2008 Honda Odyssey minivan", "van"),
+        ("a 2012 Harley-Davidson motorcycle", "motorcycle"),
+        ("a 2003 Honda Accord", "unknown"),  # a make and model do not say the kind
+    ],
+)
+def test_the_kind_is_the_head_noun_of_the_words_that_describe_the_vehicle(described: str, kind: str) -> None:
+    s = extract(f"V1, {described}, was traveling east. V2 was stopped ahead. V1 struck the rear of V2.", "k")
+    assert str(s.participant("V1").kind) == kind

@@ -13,6 +13,7 @@ from sovarc.compiler.maps.networks import as_opendrive_14
 from sovarc.compiler.plan import Network
 from sovarc.dsl.errors import InputError, UnsupportedError
 from sovarc.targets.openscenario import emit_files
+from sovarc.targets.openscenario.oracle import judge
 from sovarc.targets.openscenario.readback import read_scenario
 from sovarc.targets.openscenario.roadnet import write_road_network
 from sovarc.targets.openscenario.schema import (
@@ -145,6 +146,19 @@ class TestSumoNetworkConverted:
         assert not finding.passed
         assert finding.message.startswith("town.xodr is not valid OpenDRIVE 1.4: line ")
         assert "lenght" in finding.message
+
+    def test_a_users_own_invalid_map_is_reported_not_judged(self, emitted: Emitter, tmp_path: Path) -> None:
+        """A user's .xodr travels unchanged: its schema errors are its own (CARLA's Town04 has some), named in
+        the finding, which passes; sovarc's conversion of a SUMO map is held to the schema (above)."""
+        _, files = emitted("t_bone")
+        (tmp_path / "scenario.xosc").write_bytes(files.xosc.read_bytes())
+        text = files.xodr.read_text(encoding="utf-8").replace('<road name="" length=', '<road name="" lenght=', 1)
+        (tmp_path / "town.xodr").write_text(text, encoding="utf-8")
+        scenario = read_scenario(tmp_path / "scenario.xosc")
+        theirs = next(f for f in judge(scenario, users_map=True)[0] if f.check == "xodr")
+        ours = next(f for f in judge(scenario)[0] if f.check == "xodr")
+        assert theirs.passed and theirs.message.startswith("the user's map, copied unchanged; town.xodr is not valid")
+        assert not ours.passed
 
 
 @requires_shared
