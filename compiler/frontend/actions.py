@@ -397,15 +397,15 @@ def read_actions_at(
             and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
         )
     ]
-    if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
-        # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
-        found = [(at, a) for at, a in found if at >= entered[0] or a.kind in (ActionKind.STOP, ActionKind.PARKED)]
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well
     backs = [at for at, a in found if a.kind is ActionKind.REVERSE]
     found = [
         (at, a) for at, a in found if a.kind is not ActionKind.DRIVE_INTO or not any(0 <= at - b <= 40 for b in backs)
     ]
+    if entered := [at for at, a in found if a.kind is ActionKind.DRIVE_INTO]:
+        # It came onto the road from off it: what it did before (parked, stopped) stands, driving does not.
+        found = [(at, a) for at, a in found if at >= entered[0] or a.kind in (ActionKind.STOP, ActionKind.PARKED)]
     if any(a.kind is ActionKind.PARKED for _, a in found):
         # Parked is where it started, wherever the report says so ("backed out of a parking space"); standing
         # there is no stop of its own.
