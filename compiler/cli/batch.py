@@ -10,7 +10,7 @@ from typing import Any
 import sovarc.targets.registry as registry
 from sovarc.compiler.batch import BatchOptions, run_batch
 from sovarc.compiler.batch.executors import EXECUTORS, Executor, make_executor
-from sovarc.compiler.cli.common import UsageError, add_llm_options, make_front_end
+from sovarc.compiler.cli.common import UsageError, add_llm_options, make_front_end, target_names
 from sovarc.compiler.frontend import scenario_name
 from sovarc.compiler.pipeline import default_map
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
@@ -56,7 +56,7 @@ def add_batch_parser(sub: Any, summary: str, formatter: Any, add_target_options:
     batch = sub.add_parser("batch", help=summary, formatter_class=formatter, description=DESCRIPTION)
     batch.add_argument("inputs", nargs="+", metavar="INPUT", help="crash reports (.txt), scenarios (.sov), or folders")
     batch.add_argument("-m", "--map", action="append", help="a map (repeatable; default: the bundled town)")
-    batch.add_argument("-t", "--target", action="append", metavar="TARGET",
+    batch.add_argument("-t", "--target", action="append", metavar="TARGET", type=target_names,
                        help=f"a target (repeatable): {', '.join(registry.names())} or all (default sumo)")  # fmt: skip
     batch.add_argument("--roads", type=positive, default=1, metavar="N", help="sites per scenario and map (default 1)")
     batch.add_argument("--spare-sites", type=int, metavar="K", help="extra sites tried in place of failed ones")
@@ -89,17 +89,9 @@ def expand_inputs(names: list[str]) -> list[str]:
     return list(dict.fromkeys(found))
 
 
-def _targets(given: list[str] | None) -> tuple[str, ...]:
-    names = registry.names()
-    chosen: list[str] = []
-    for value in given or ["sumo"]:
-        if value == "all":
-            chosen += names
-        elif value in names:
-            chosen.append(value)
-        else:
-            raise UsageError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
-    return tuple(dict.fromkeys(chosen))
+def _targets(given: list[tuple[str, ...]] | None) -> tuple[str, ...]:
+    """The targets of every `-t` (each already a tuple of names: see `target_names`), once each, in order."""
+    return tuple(dict.fromkeys(name for names in given or [("sumo",)] for name in names))
 
 
 def _refuse_shared_names(inputs: list[str]) -> None:

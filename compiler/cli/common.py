@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
 
+import sovarc.targets.registry as registry
 from sovarc.compiler.frontend import MODEL_EXTRA_HINT, FrontEnd, check_llm, default_llm
 from sovarc.compiler.pipeline import Options
 from sovarc.dsl import Severity, SovarcError, read_source
@@ -92,3 +93,13 @@ def source_of(name: str) -> Source | None:
         return read_source(name)
     except SovarcError:
         return None
+
+
+def target_names(value: str) -> tuple[str, ...]:
+    """`-t`: a registered target's name, or all of them."""
+    names = registry.names()
+    if value == "all":
+        return names
+    if value not in names:
+        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
+    return (value,)

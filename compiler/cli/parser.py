@@ -8,7 +8,7 @@ from typing import Any
 
 import sovarc.targets.registry as registry
 from sovarc.compiler.cli.batch import add_batch_parser, add_executor_options, positive
-from sovarc.compiler.cli.common import add_llm_options
+from sovarc.compiler.cli.common import add_llm_options, target_names
 from sovarc.compiler.cli.sites import add_sites_parser
 from sovarc.compiler.pipeline import STAGE_NAMES
 
@@ -336,16 +336,6 @@ def _not_negative(value: str) -> int:
     if number < 0:
         raise argparse.ArgumentTypeError(f"must be 0 or more, not {number}")
     return number
-
-
-def target_names(value: str) -> tuple[str, ...]:
-    """`-t`: a registered target's name, or all of them."""
-    names = registry.names()
-    if value == "all":
-        return names
-    if value not in names:
-        raise argparse.ArgumentTypeError(f"unknown target '{value}'; choose from {', '.join(names)} or all")
-    return (value,)
 
 
 def add_target_options(parser: argparse.ArgumentParser) -> None:

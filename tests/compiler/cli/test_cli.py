@@ -67,7 +67,7 @@ def test_check_reports_a_hand_broken_file_with_a_caret(tmp_path: Path) -> None:
     lines = result.stderr.splitlines()
     assert lines[0] == f"{broken}:18:7: error: unknown action 'turn_lefft'; expected one of: " + (
         "follow_lane, turn_left, turn_right, change_lane, go_across, stop, u_turn, drive_into, "
-        "drive_off, retrograde, cross, walk"
+        "drive_off, retrograde, cross, walk, reverse, parked"
     )
     assert lines[1] == "  18 |       turn_lefft"
     assert lines[2] == "     |       ^~~~~~~~~~"
