@@ -25,6 +25,7 @@ ideally has heading `orientation + 90 * k`. The site search rotates reports on t
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
@@ -95,6 +96,8 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
             connections = _connections(roads, incoming_edges, outgoing_ids)
         else:
             connections = _cluster_connections(roads, cluster, arms)
+        if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
+            continue  # one-way roads merging or diverging (a ramp, a carriageway's fork): no T, no cross
         sites.append(
             Site(
                 id=f"junction:{cluster.id}",
@@ -108,6 +111,34 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
             )
         )
     return sites
+
+
+def streams_cross(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:
+    """Whether two streams of traffic through a junction of one-way arms cross each other.
+
+    Each arm is a point on a circle around the junction (where it lies: opposite its entering
+    heading) and each stream a chord from the arm it enters by to the arm it leaves by; two
+    chords cross when their ends alternate around the circle. Where one-way roads only merge and
+    diverge (a ramp joining or leaving a carriageway, two carriageways meeting in a loop), no
+    chords cross and a person sees no junction; two one-way streets crossing do cross.
+    """
+    place = {}
+    for arm in arms:
+        for lane in arm.incoming + arm.outgoing:
+            place[lane.id] = arm.id
+    where = {arm.id: (arm.heading + 180.0) % 360.0 for arm in arms}
+    chords = sorted({(place[c.from_lane], place[c.to_lane]) for c in connections if c.from_lane in place})
+    order = {arm_id: k for k, arm_id in enumerate(sorted(where, key=lambda a: (where[a], a)))}
+
+    def between(x: int, a: int, b: int) -> bool:  # x strictly inside the arc from a to b, going round
+        return 0 < (x - a) % len(order) < (b - a) % len(order)
+
+    for (a, b), (c, d) in itertools.combinations(chords, 2):
+        if len({a, b, c, d}) == 4:
+            i, j, k, m = order[a], order[b], order[c], order[d]
+            if between(k, i, j) != between(m, i, j):
+                return True
+    return False
 
 
 def _arm_lanes(roads: RoadNet, arm: NodeArm) -> tuple[str, float, tuple[LaneInfo, ...], tuple[LaneInfo, ...]]:
