@@ -28,6 +28,7 @@ from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.needs import HEADING_DEGREES, JUNCTION_MOVES, Need, scenario_needs
 from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
+from sovarc.compiler.maps.survey import ramps
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, RoadKind, Scenario
 
@@ -234,6 +235,8 @@ def _no_fit(
     if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
         message = f"{road_map.name} has no {kind.split(' ', 1)[1]} for scenario '{scenario.name}' ({asked})"
     message += f"; the map has {have}"
+    if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
+        message += ramps(road_map, scenario.road.kind)
     of_kind = [site for site in sites if site.kind is scenario.road.kind]
     if of_kind and not any(all(arm.two_way for arm in site.arms) for site in of_kind):
         # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX)

@@ -54,7 +54,8 @@ def find_sites(
     sites = road_map.cache.get(min_length)
     if sites is None:
         roads = road_net(road_map)
-        found = _junction_sites(roads) + straight_sites(roads, min_length)
+        junctions, road_map.cache["merges"] = _junction_sites(roads)
+        found = junctions + straight_sites(roads, min_length)
         sites = road_map.cache[min_length] = tuple(sorted(found, key=lambda s: s.id))
     wanted = RoadKind(kind) if kind is not None else None
     return [s for s in sites if wanted is None or s.kind is wanted]
@@ -71,8 +72,16 @@ def road_net(road_map: RoadMap) -> RoadNet:
     return roads
 
 
-def _junction_sites(roads: RoadNet) -> list[Site]:
+def merges(road_map: RoadMap) -> int:
+    """How many junctions of the map are one-way roads merging or diverging, and so no site."""
+    find_sites(road_map)
+    return int(road_map.cache["merges"])
+
+
+def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
+    """The T's and crosses of the map, and how many merges or diverges of one-way roads it has."""
     sites = []
+    merging = 0
     for cluster in junction_clusters(roads):
         raw = [_arm_lanes(roads, arm) for arm in cluster.arms]
         if len(raw) not in (3, 4):
@@ -97,7 +106,8 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
         else:
             connections = _cluster_connections(roads, cluster, arms)
         if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
-            continue  # one-way roads merging or diverging (a ramp, a carriageway's fork): no T, no cross
+            merging += 1  # one-way roads merging or diverging (a ramp, a carriageway's fork): no T, no cross
+            continue
         sites.append(
             Site(
                 id=f"junction:{cluster.id}",
@@ -110,7 +120,7 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
                 control="/".join(sorted({node.getType() for node in cluster.nodes})),
             )
         )
-    return sites
+    return sites, merging
 
 
 def streams_cross(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:

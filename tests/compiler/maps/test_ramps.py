@@ -11,12 +11,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from sovarc.compiler.maps import find_sites
+from sovarc.compiler.maps import find_sites, match_sites
 from sovarc.compiler.maps.roads import LaneInfo
 from sovarc.compiler.maps.site import Arm, Connection
 from sovarc.compiler.maps.sites import streams_cross
+from sovarc.compiler.maps.survey import missing
+from sovarc.dsl.errors import LoweringError
 from sovarc.dsl.ir import RoadKind
 
+from tests.compiler.maps.conftest import scenario
 from tests.compiler.maps.test_roads import build, kinds
 
 pytestmark = pytest.mark.slow  # needs SUMO
@@ -32,6 +35,12 @@ def test_a_diverge_of_a_motorway_is_no_t(tmp_path: Path) -> None:
     nodes = CARRIAGEWAY | {"off": RAMP_OFF}
     road_map = build(tmp_path, nodes, ["in w m 3 oneway", "on m e 2 oneway", "ramp m off 1 oneway"])
     assert T not in kinds(road_map) and X not in kinds(road_map)
+    # a miss says what the map has instead, in the survey and in the site search
+    ramp = "1 place where one-way roads only merge or diverge (ramps) are no junction of crossing traffic"
+    assert ramp in str(missing(road_map, T))
+    with pytest.raises(LoweringError, match=r"1 place where one-way roads only merge or diverge"):
+        match_sites(scenario("t_junction_left_turn_out_side"), road_map)
+    assert missing(road_map, S) is None
 
 
 def test_a_merge_onto_a_motorway_is_no_t(tmp_path: Path) -> None:
