@@ -108,6 +108,8 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
         if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
             merging += 1  # one-way roads merging or diverging (a ramp, a carriageway's fork): no T, no cross
             continue
+        if divides(arms, connections):
+            continue  # a two-way road parting into its two directions: where a median or a loop begins
         sites.append(
             Site(
                 id=f"junction:{cluster.id}",
@@ -121,6 +123,22 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
             )
         )
     return sites, merging
+
+
+def divides(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:
+    """Whether three arms are one two-way road parting into its two directions: the other two arms
+    are one-way, one in and one out, and no traffic runs from the one into the other (a one-way
+    road through the node would). A person sees a road dividing there, no T-junction."""
+    if len(arms) != 3 or sum(arm.two_way for arm in arms) != 1:
+        return False
+    ins = [arm for arm in arms if arm.incoming and not arm.outgoing]
+    outs = [arm for arm in arms if arm.outgoing and not arm.incoming]
+    if len(ins) != 1 or len(outs) != 1:
+        return False
+    entering = {lane.id for lane in ins[0].incoming}
+    leaving = {lane.id for lane in outs[0].outgoing}
+    # a turnaround from the one into the other is a U-turn at the road's end, no road through
+    return not any(c.from_lane in entering and c.to_lane in leaving and c.direction != "t" for c in connections)
 
 
 def streams_cross(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:

@@ -1,4 +1,5 @@
 """One-way roads that only merge and diverge make no junction a person would call a T or a cross.
+Nor does a two-way road parting into its two directions.
 
 A motorway's ramps leave and join a one-way carriageway; two carriageways may meet in a loop.
 Read by its arms' headings alone, such a node is a 'T' (three one-way arms) or a 'cross' (a ramp
@@ -101,3 +102,15 @@ def test_streams_cross_when_their_ends_alternate_round_the_junction(streams: tup
     arms = [_arm("w", 90.0, True), _arm("s", 0.0, True), _arm("e", 270.0, False), _arm("n", 180.0, False)]
     connections = tuple(Connection(a, b, "s", None) for a, b in streams)
     assert streams_cross(arms, connections) is cross
+
+
+def test_a_two_way_road_parting_into_its_two_directions_is_no_t(tmp_path: Path) -> None:
+    # a two-way road from the west whose directions part at m, 90 degrees apart, into a one-way pair
+    # (a loop, a couplet, a median beginning): no traffic runs from the one into the other, as in an
+    # OpenDRIVE map that defines no such link (netconvert alone would add a turn back between them)
+    nodes = {"w": (-200, 0), "m": (0, 0), "p": (100, -100), "q": (300, -100), "r": (300, 100), "s": (100, 100)}
+    edges = ["road w m 1", "out1 m p 1 oneway", "out2 p q 1 oneway", "in1 r s 1 oneway", "in2 s m 1 oneway"]
+    road_map = build(tmp_path, nodes, edges, forbid=("in2 out1",))
+    assert T not in kinds(road_map) and X not in kinds(road_map)
+    (tmp_path / "linked").mkdir()  # with the turn back between them, a car can go on from one to the other
+    assert kinds(build(tmp_path / "linked", nodes, edges))[T] == 1
