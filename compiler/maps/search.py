@@ -111,9 +111,9 @@ def match_sites(
 def _oblique(match: SiteMatch, needs: tuple[Need, ...]) -> bool:
     """Whether two participants going straight over a junction from two arms approach at an angle
     a frontal crash accepts (opposite arms do: head on); True when the needs are of another kind
-    (a turn, an unplaced participant, a straight road), where the arms' angle does not decide it."""
+    (a turn, an unplaced participant, a T's stem that must turn), where the arms' angle does not decide it."""
     across = [n for n in needs if n.placed and n.move in (None, ActionKind.GO_ACROSS)]
-    if match.site.kind is RoadKind.STRAIGHT or len(across) != 2 or len(needs) != 2:
+    if match.site.kind is not RoadKind.INTERSECTION or len(across) != 2 or len(needs) != 2:
         return True
     arms = [match.arm_for(n.heading) for n in across if n.heading is not None]
     if len(arms) != 2 or arms[0] is None or arms[1] is None or arms[0].id == arms[1].id:
