@@ -18,6 +18,8 @@ curvature along a road, wherever its edges split (straights.py). Such a lane is 
 lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings, and a
 junction netconvert built as several nodes (a divided road's carriageways each meeting a side
 road at a node of its own, a junction split by short edges) is one junction (clusters.py).
+A junction is one of crossing traffic: where one-way roads only merge and diverge (ramps) or a
+two-way road parts into its two directions, a person sees no T and no cross, and none is made.
 
 Each site lays a compass cross over its arms (`Site.orientation`, `Arm.slot`): arm slot k
 ideally has heading `orientation + 90 * k`. The site search rotates reports on this cross.
