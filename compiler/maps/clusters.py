@@ -4,6 +4,8 @@ netconvert often builds one junction as several nodes a few metres apart:
 - from OpenDRIVE and OSM, a junction is split into nodes joined by short edges;
 - a divided road meets a side road at one node per carriageway, the side road's two
   directions (or a crossing of the median) joining them.
+Nodes with no road between them are no one junction, however close: no traffic goes from one
+to another (side roads on both sides of a divided road with no gap in its median are two T's).
 Read node by node, each such node is a one-way 'T' or a half of a cross. Here the junction
 nodes of a map are grouped (from geometry alone: how far apart they are against the width of
 their roads, and what joins them) and each group is read as one junction: its arms are the
@@ -134,6 +136,10 @@ def _cluster(roads: RoadNet, members: list[Any]) -> Cluster | None:
         for e in n.getOutgoing()
         if is_road(e) and e.getToNode().getID() in inside and e.getFromNode() is not e.getToNode()
     )
+    if not inner:
+        # no road between its nodes, so no traffic goes from one to another: each node is a junction
+        # of its own (side roads meeting a divided road's carriageways, with no gap in the median)
+        return None
     halves: list[NodeArm] = []
     for node in members:
         for arm in roads.arms[node.getID()]:

@@ -24,14 +24,17 @@ import random
 from collections import Counter
 from dataclasses import dataclass
 
+from sovarc.compiler.crashes import CRASH_ANGLES
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.needs import HEADING_DEGREES, JUNCTION_MOVES, Need, scenario_needs
 from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
+from sovarc.compiler.maps.survey import ramps
 from sovarc.dsl.errors import Diagnostic, LoweringError
-from sovarc.dsl.ir import ActionKind, Heading, RoadKind, Scenario
+from sovarc.dsl.ir import ActionKind, CrashType, Heading, RoadKind, Scenario
 
 ROTATIONS = (0, 90, 180, 270)
+FRONTAL_ARMS = CRASH_ANGLES["frontal"][0]  # degrees two straight-over paths must cross at for a frontal crash
 
 
 @dataclass(frozen=True)
@@ -94,7 +97,28 @@ def match_sites(
         could_clamp = not clamp and any(match_site(site, needs, clamp=True) for site in sites)
         every_site = find_sites(road_map, min_length=min_length)
         raise LoweringError(_no_fit(scenario, needs, road_map, every_site, could_clamp))
+    if scenario.crash.type is CrashType.FRONTAL:
+        # a frontal crash between two cars crossing straight over needs their arms oblique: sites
+        # where they are come first, so a right-angled grid's crossings do not use up the spares
+        oblique = [m for m in matches if _oblique(m, needs)]
+        if oblique and len(oblique) < len(matches):
+            chosen = pick_diverse(oblique, n, seed)
+            rest = [m for m in matches if not any(m is o for o in oblique)]
+            return chosen + pick_diverse(rest, n - len(chosen), seed) if len(chosen) < n else chosen
     return pick_diverse(matches, n, seed)
+
+
+def _oblique(match: SiteMatch, needs: tuple[Need, ...]) -> bool:
+    """Whether two participants going straight over a junction from two arms approach at an angle
+    a frontal crash accepts (opposite arms do: head on); True when the needs are of another kind
+    (a turn, an unplaced participant, a T's stem that must turn), where the arms' angle does not decide it."""
+    across = [n for n in needs if n.placed and n.move in (None, ActionKind.GO_ACROSS)]
+    if match.site.kind is not RoadKind.INTERSECTION or len(across) != 2 or len(needs) != 2:
+        return True
+    arms = [match.arm_for(n.heading) for n in across if n.heading is not None]
+    if len(arms) != 2 or arms[0] is None or arms[1] is None or arms[0].id == arms[1].id:
+        return True
+    return abs(angle_diff(arms[0].heading, arms[1].heading)) >= FRONTAL_ARMS
 
 
 def match_site(site: Site, needs: tuple[Need, ...], *, clamp: bool = False) -> SiteMatch | None:
@@ -234,6 +258,8 @@ def _no_fit(
     if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
         message = f"{road_map.name} has no {kind.split(' ', 1)[1]} for scenario '{scenario.name}' ({asked})"
     message += f"; the map has {have}"
+    if isinstance(scenario.road.kind, RoadKind) and not counts[scenario.road.kind]:
+        message += ramps(road_map, scenario.road.kind)
     of_kind = [site for site in sites if site.kind is scenario.road.kind]
     if of_kind and not any(all(arm.two_way for arm in site.arms) for site in of_kind):
         # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX)

@@ -18,6 +18,8 @@ curvature along a road, wherever its edges split (straights.py). Such a lane is 
 lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings, and a
 junction netconvert built as several nodes (a divided road's carriageways each meeting a side
 road at a node of its own, a junction split by short edges) is one junction (clusters.py).
+A junction is one of crossing traffic: where one-way roads only merge and diverge (ramps) or a
+two-way road parts into its two directions, a person sees no T and no cross, and none is made.
 
 Each site lays a compass cross over its arms (`Site.orientation`, `Arm.slot`): arm slot k
 ideally has heading `orientation + 90 * k`. The site search rotates reports on this cross.
@@ -25,6 +27,7 @@ ideally has heading `orientation + 90 * k`. The site search rotates reports on t
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
@@ -53,7 +56,8 @@ def find_sites(
     sites = road_map.cache.get(min_length)
     if sites is None:
         roads = road_net(road_map)
-        found = _junction_sites(roads) + straight_sites(roads, min_length)
+        junctions, road_map.cache["merges"] = _junction_sites(roads)
+        found = junctions + straight_sites(roads, min_length)
         sites = road_map.cache[min_length] = tuple(sorted(found, key=lambda s: s.id))
     wanted = RoadKind(kind) if kind is not None else None
     return [s for s in sites if wanted is None or s.kind is wanted]
@@ -70,8 +74,16 @@ def road_net(road_map: RoadMap) -> RoadNet:
     return roads
 
 
-def _junction_sites(roads: RoadNet) -> list[Site]:
+def merges(road_map: RoadMap) -> int:
+    """How many junctions of the map are one-way roads merging or diverging, and so no site."""
+    find_sites(road_map)
+    return int(road_map.cache["merges"])
+
+
+def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
+    """The T's and crosses of the map, and how many merges or diverges of one-way roads it has."""
     sites = []
+    merging = 0
     for cluster in junction_clusters(roads):
         raw = [_arm_lanes(roads, arm) for arm in cluster.arms]
         if len(raw) not in (3, 4):
@@ -95,6 +107,11 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
             connections = _connections(roads, incoming_edges, outgoing_ids)
         else:
             connections = _cluster_connections(roads, cluster, arms)
+        if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
+            merging += 1  # one-way roads merging or diverging (a ramp, a carriageway's fork): no T, no cross
+            continue
+        if divides(arms, connections):
+            continue  # a two-way road parting into its two directions: where a median or a loop begins
         sites.append(
             Site(
                 id=f"junction:{cluster.id}",
@@ -107,7 +124,51 @@ def _junction_sites(roads: RoadNet) -> list[Site]:
                 control="/".join(sorted({node.getType() for node in cluster.nodes})),
             )
         )
-    return sites
+    return sites, merging
+
+
+def divides(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:
+    """Whether three arms are one two-way road parting into its two directions: the other two arms
+    are one-way, one in and one out, and no traffic runs from the one into the other (a one-way
+    road through the node would). A person sees a road dividing there, no T-junction."""
+    if len(arms) != 3 or sum(arm.two_way for arm in arms) != 1:
+        return False
+    ins = [arm for arm in arms if arm.incoming and not arm.outgoing]
+    outs = [arm for arm in arms if arm.outgoing and not arm.incoming]
+    if len(ins) != 1 or len(outs) != 1:
+        return False
+    entering = {lane.id for lane in ins[0].incoming}
+    leaving = {lane.id for lane in outs[0].outgoing}
+    # a turnaround from the one into the other is a U-turn at the road's end, no road through
+    return not any(c.from_lane in entering and c.to_lane in leaving and c.direction != "t" for c in connections)
+
+
+def streams_cross(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:
+    """Whether two streams of traffic through a junction of one-way arms cross each other.
+
+    Each arm is a point on a circle around the junction (where it lies: opposite its entering
+    heading) and each stream a chord from the arm it enters by to the arm it leaves by; two
+    chords cross when their ends alternate around the circle. Where one-way roads only merge and
+    diverge (a ramp joining or leaving a carriageway, two carriageways meeting in a loop), no
+    chords cross and a person sees no junction; two one-way streets crossing do cross.
+    """
+    place = {}
+    for arm in arms:
+        for lane in arm.incoming + arm.outgoing:
+            place[lane.id] = arm.id
+    where = {arm.id: (arm.heading + 180.0) % 360.0 for arm in arms}
+    chords = sorted({(place[c.from_lane], place[c.to_lane]) for c in connections if c.from_lane in place})
+    order = {arm_id: k for k, arm_id in enumerate(sorted(where, key=lambda a: (where[a], a)))}
+
+    def between(x: int, a: int, b: int) -> bool:  # x strictly inside the arc from a to b, going round
+        return 0 < (x - a) % len(order) < (b - a) % len(order)
+
+    for (a, b), (c, d) in itertools.combinations(chords, 2):
+        if len({a, b, c, d}) == 4:
+            i, j, k, m = order[a], order[b], order[c], order[d]
+            if between(k, i, j) != between(m, i, j):
+                return True
+    return False
 
 
 def _arm_lanes(roads: RoadNet, arm: NodeArm) -> tuple[str, float, tuple[LaneInfo, ...], tuple[LaneInfo, ...]]:

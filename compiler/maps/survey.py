@@ -15,7 +15,7 @@ from pathlib import Path
 
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.roads import is_road
-from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
+from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites, merges
 from sovarc.dsl.ir import RoadKind
 
 KIND_NAMES: dict[RoadKind, tuple[str, str]] = {
@@ -67,7 +67,17 @@ def missing(road_map: RoadMap, kind: RoadKind | str, *, min_length: float = DEFA
     found = survey(road_map, min_length=min_length)
     if found.counts[wanted]:
         return None
-    return f"{road_map.name} has no {KIND_NAMES[wanted][0].split(' ', 1)[1]}: it has {have(found.counts)}"
+    message = f"{road_map.name} has no {KIND_NAMES[wanted][0].split(' ', 1)[1]}: it has {have(found.counts)}"
+    return message + ramps(road_map, wanted)
+
+
+def ramps(road_map: RoadMap, kind: RoadKind) -> str:
+    """For a miss of a junction kind: the merges and diverges of one-way roads the map has instead."""
+    count = merges(road_map) if kind is not RoadKind.STRAIGHT else 0
+    if not count:
+        return ""
+    places = "place" if count == 1 else "places"
+    return f"; {count} {places} where one-way roads only merge or diverge (ramps) are no junction of crossing traffic"
 
 
 def describe(site: Site) -> str:

@@ -59,6 +59,16 @@ def test_a_divided_road_crossed_by_a_road_is_one_cross(tmp_path: Path) -> None:
     assert across == {("south", ("-med",))}  # straight over both carriageways, through the median
 
 
+def test_side_roads_with_no_gap_in_the_median_are_two_ts(tmp_path: Path) -> None:
+    # the same roads with no edge across the median: no traffic goes from one carriageway's node
+    # to the other's, so each side road meets its carriageway at a T of its own (right in, right out)
+    nodes = {"w1": (-200, 0), "a": (0, 0), "e1": (200, 0), "e2": (200, 10), "b": (0, 10), "w2": (-200, 10)}
+    nodes |= {"s": (0, -200), "n": (0, 210)}
+    road_map = build(tmp_path, nodes, [*CARRIAGEWAYS[:4], "south a s 1", "north b n 1"])
+    assert kinds(road_map).get(X) is None and kinds(road_map)[T] == 2
+    assert sorted(site.id for site in find_sites(road_map, T)) == ["junction:a", "junction:b"]
+
+
 def test_nodes_far_apart_stay_two_junctions(tmp_path: Path) -> None:
     # the same roads with the carriageways 60 m apart: two T's, not one junction
     road_map = divided(tmp_path, "south", "north", gap=60.0)

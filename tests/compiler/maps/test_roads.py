@@ -26,9 +26,12 @@ HERE = Path(__file__).parent
 CARLA = SHARED / "data" / "opendrive" / "carla"
 
 
-def build(tmp_path: Path, nodes: dict[str, tuple[float, float]], edges: list[str]) -> RoadMap:
+def build(
+    tmp_path: Path, nodes: dict[str, tuple[float, float]], edges: list[str], forbid: tuple[str, ...] = ()
+) -> RoadMap:
     """A network from nodes (id: x, y) and edges ('id from to lanes', plus ' oneway' for no
-    edge back): a two-way edge gets a reverse edge '-id'."""
+    edge back): a two-way edge gets a reverse edge '-id'. `forbid` names connections
+    ('from_edge to_edge') netconvert must not make."""
     nod = "".join(f'<node id="{n}" x="{x}" y="{y}" type="priority"/>' for n, (x, y) in nodes.items())
     rows = []
     for spec in edges:
@@ -40,6 +43,10 @@ def build(tmp_path: Path, nodes: dict[str, tuple[float, float]], edges: list[str
     (tmp_path / "n.edg.xml").write_text(f"<edges>{''.join(rows)}</edges>")
     out = tmp_path / "n.net.xml"
     args = ["-n", "n.nod.xml", "-e", "n.edg.xml", "-o", out.name, "--no-turnarounds", "--no-warnings"]
+    if forbid:
+        cons = "".join(f'<delete from="{a}" to="{b}"/>' for a, b in (pair.split() for pair in forbid))
+        (tmp_path / "n.con.xml").write_text(f"<connections>{cons}</connections>")
+        args += ["-x", "n.con.xml"]
     subprocess.run([netconvert_path(), *args], cwd=tmp_path, check=True, capture_output=True)
     return load_map(out)
 

@@ -14,6 +14,7 @@ from sovarc.dsl.errors import LoweringError
 from sovarc.dsl.ir import ActionKind, RoadKind, Scenario
 
 from tests.compiler.maps.conftest import SCENARIOS, scenario
+from tests.compiler.maps.test_roads import build
 
 pytestmark = pytest.mark.slow  # needs SUMO
 
@@ -120,3 +121,29 @@ def test_too_few_lanes_is_a_lowering_error_unless_clamped(opendrive: dict[str, R
         assert not match.exact and all("clamped to" in note for note in match.clamped)
         arm = match.arm_for(parsed.participants[0].heading)
         assert arm is not None and all(p.lane <= len(arm.incoming) for p in match.placements)
+
+
+FRONTAL_ACROSS = """scenario frontal_across {
+  road { kind intersection }
+  vehicle V1 { heading west actions { go_across } }
+  vehicle V2 { heading north actions { go_across } }
+  crash { type frontal striker V2 victim V1 }
+}
+"""
+
+
+def test_a_frontal_crash_across_a_junction_is_staged_on_oblique_arms_first(tmp_path: Path) -> None:
+    # three crossings of an east-west road: two at right angles, one by a road 30 degrees off north.
+    # Cars crossing straight over at right angles never meet front to front, so the oblique one leads
+    nodes = {"w": (-300, 0), "a": (0, 0), "b": (300, 0), "o": (600, 0), "e": (900, 0)}
+    nodes |= {"an": (0, 200), "as": (0, -200), "bn": (300, 200), "bs": (300, -200), "on": (715, 200), "os": (485, -200)}
+    edges = ["r1 w a 1", "r2 a b 1", "r3 b o 1", "r4 o e 1"]
+    edges += [f"{j}{k} {j} {j}{k} 1" for j in "abo" for k in "ns"]
+    road_map = build(tmp_path, nodes, edges)
+    assert len(find_sites(road_map, RoadKind.INTERSECTION)) == 3
+    parsed = parse(FRONTAL_ACROSS)
+    found = match_sites(parsed, road_map, n=3)
+    assert found[0].site.id == "junction:o"
+    v1, v2 = found[0].arm_for(parsed.participants[0].heading), found[0].arm_for(parsed.participants[1].heading)
+    assert abs(angle_diff(v1.heading, v2.heading)) >= 100.0
+    assert {m.site.id for m in found[1:]} == {"junction:a", "junction:b"}  # the others still fill the slots
