@@ -1,0 +1,73 @@
+"""Kinds of language in fleet narratives that name who met whom, each on sentences written for these tests:
+corners named from a side, a bare side of passing, "rear ended" spelt open, the striker behind the victim,
+lane changes said any way, and the report's own labels used beside its short names."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.compiler.frontend.crash import _kind, read_sentence
+from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Unknown
+from sovarc.dsl.span import Source
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
+
+
+def actions(s: Scenario, pid: str) -> list[tuple[ActionKind, object]]:
+    p = next(p for p in s.participants if p.id == pid)
+    return [] if isinstance(p.actions, Unknown) else [(a.kind, a.to) for a in p.actions]
+
+
+@pytest.mark.parametrize(
+    ("part", "kind"),
+    [
+        ("driver's side rear", CrashType.REAR_END),  # an end named after a side: that end's corner
+        ("passenger side front", CrashType.FRONTAL),
+        ("rear left sensor", CrashType.REAR_END),
+        ("front left fender", CrashType.FRONTAL),
+        ("rear quarter panel", CrashType.REAR_END),
+        ("left rear quarter panel", CrashType.SIDE),  # the head noun is the side's panel
+        ("right front side", CrashType.SIDE),  # the front half of a side, as the labelled reports read it
+        ("rear driver side door", CrashType.SIDE),  # a door is on a side, whatever end it is near
+        ("passenger side mirror", CrashType.SIDE),
+        ("cab", CrashType.FRONTAL),
+        ("tailgate", CrashType.REAR_END),
+        ("bumper", None),  # front or rear: not said
+    ],
+)
+def test_a_part_is_an_end_or_a_side(part: str, kind: CrashType | None) -> None:
+    assert _kind(part) is kind
+
+
+def test_passing_on_a_side_is_no_part() -> None:
+    """ "pass V1 on the left" says where V2 went, not which part of V1 was struck."""
+    crash = read_sentence(
+        "V2 moved out to pass the stopped V1 on the left and the front right corner of V2 struck the rear left "
+        "corner of V1."
+    )
+    assert crash is not None and (crash.striker, crash.victim, crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "V1 was waiting at the light when it was rear ended by V2.",
+        "V2 rear ended the stationary V1 at the light.",
+        "V1 was slowing in traffic when V2 behind made contact with it.",
+        "V1 was stopped at the light when V2 struck V1 from the rear.",
+        "V1 was braking for a queue when V2, which was traveling directly behind, made contact with V1's bumper.",
+    ],
+)
+def test_one_that_comes_from_behind_strikes_the_rear(sentence: str) -> None:
+    crash = read_sentence(sentence)
+    assert crash is not None and (crash.striker, crash.victim, crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+def test_a_bumper_met_by_a_follower_is_the_rear() -> None:
+    s = read(
+        "The Waymo AV was slowing for a queue on [XXX] when a sedan behind the Waymo AV sped up and the front of "
+        "the sedan made contact with the bumper of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
