@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.clauses import Piece
+from sovarc.compiler.frontend.lanes import lane_change_side
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
@@ -36,7 +37,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull)\w*(?: \w+){0,6}? (?:in)?to the (?:left|right) lane\b"
+            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull|maneuver|manoeuvr)\w*(?: \w+){0,6}? (?:in)?to the "
+            r"(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b"
             r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
             r"(?:the|an?) (?:\w+ ){0,2}lane\b",
             re.I,
@@ -114,6 +116,17 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
+    # Into the lane another road user is in, or the one between: a lane change, its side said by the lane left
+    # ("V2 in the left adjacent lane ... entered V1's lane")
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
+            r"|the (?:center|centre|middle) (?:travel )?lane)\b",
+            re.I,
+        ),
+    ),
     # Around another road user, to one side: "maneuvered around the left side of V1", "steered around V1 using
     # the left turn lane": a lane change to the side it names
     (
@@ -124,7 +137,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.RETROGRADE,
         re.compile(
-            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I
+            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
+            r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b",
+            re.I,
         ),
     ),
 ]
@@ -162,7 +177,8 @@ _CLAUSE = (
 )
 _INTENT = re.compile(
     r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
+    r"|waiting|waited|awaiting|in order|so as|prior|(?:an? )?(?:opportunity|chance))"
+    r"(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
 # A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
@@ -248,6 +264,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
     near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
     meant = _meant_turn(pieces)
     found: list[tuple[int, Action]] = []
+    said = ""  # what was said of it before this piece: where its lane was
     for piece in pieces:
         done = what_was_done(piece.text)
         if near:
@@ -258,11 +275,11 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
                 to: Side | None = None
-                if kind is ActionKind.CHANGE_LANE:  # to the side named last: "from the left lane into the right"
-                    sides = re.findall(r"\b(left|right)\b", done[m.start() : max(m.end(), m.start() + 60)], re.I)
-                    if not sides:
+                if kind is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
+                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()])
+                    if side is None:
                         continue
-                    to = Side(sides[-1].lower() if m.end() - m.start() > 20 else sides[0].lower())
+                    to = Side(side)
                 if kind is ActionKind.GO_ACROSS and not at_junction:
                     continue
                 # "turning left after being stopped": what the after-clause says came first
@@ -270,6 +287,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                 found.append((at, Action(kind, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
+        said += done + " "
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
     if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
         for piece in pieces:

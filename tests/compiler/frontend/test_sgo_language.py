@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import _kind, read_sentence
-from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Unknown
+from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Side, Unknown
 from sovarc.dsl.span import Source
 
 
@@ -71,3 +71,64 @@ def test_a_bumper_met_by_a_follower_is_the_rear() -> None:
         "the sedan made contact with the bumper of the Waymo AV."
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+AV = "On June [XXX], 2024 at 9:10 AM PT a Waymo Autonomous Vehicle (Waymo AV) was in a collision involving a sedan. "
+
+
+@pytest.mark.parametrize(
+    ("said", "side"),
+    [
+        ("the sedan, in the left adjacent lane, initiated a right lane change", Side.RIGHT),  # side before
+        ("the sedan began to lane change left", Side.LEFT),  # side after
+        ("the sedan traveling in the rightmost lane began to change lanes into the center lane", Side.LEFT),
+        ("the sedan traveling in the left adjacent lane drifted into the Waymo AV's lane", Side.RIGHT),
+        ("the sedan maneuvered into the left turn lane to get by", Side.LEFT),
+        ("the sedan changed lanes, passing the Waymo AV on the left", Side.LEFT),
+    ],
+)
+def test_a_lane_change_goes_to_the_lane_entered_or_away_from_the_lane_left(said: str, side: Side) -> None:
+    s = read(
+        AV + f"The Waymo AV was traveling north on [XXX] in the center lane when {said}, and the passenger side of "
+        "the sedan made contact with the driver side of the Waymo AV."
+    )
+    assert (ActionKind.CHANGE_LANE, side) in actions(s, "V2")
+    assert ActionKind.CHANGE_LANE not in [k for k, _ in actions(s, "V1")]
+
+
+def test_a_participant_beside_another_is_an_object() -> None:
+    """ "alongside V1", "around V1" name V1 as an object: what follows is still the subject's doing."""
+    s = read(
+        AV + "The Waymo AV was traveling west on [XXX]. The sedan traveling alongside the Waymo AV initiated a "
+        "right lane change, and the front passenger side of the sedan made contact with the driver side of the "
+        "Waymo AV."
+    )
+    assert (ActionKind.CHANGE_LANE, Side.RIGHT) in actions(s, "V2")
+    assert [k for k, _ in actions(s, "V1")] == [ActionKind.FOLLOW_LANE]
+
+
+def test_an_object_said_in_a_state_is_the_subject_of_it() -> None:
+    s = read(
+        AV + "The Waymo AV was traveling north on [XXX] when it approached the sedan stopped in the left lane. "
+        "As the Waymo AV was passing, the rear door of the sedan opened and made contact with the Waymo AV."
+    )
+    assert [k for k, _ in actions(s, "V1")] == [ActionKind.FOLLOW_LANE]
+    assert actions(s, "V2")[-1][0] is ActionKind.STOP
+
+
+def test_an_opportunity_to_change_lanes_is_not_a_lane_change() -> None:
+    s = read(
+        AV + "The Waymo AV was stopped in the right lane, awaiting an opportunity to move into the left lane, when "
+        "the sedan behind it made contact with the rear of the Waymo AV."
+    )
+    assert [k for k, _ in actions(s, "V1")] == [ActionKind.STOP]
+
+
+def test_an_unnumbered_road_user_does_not_act_for_a_participant() -> None:
+    s = read(
+        AV + "The Waymo AV was traveling in the middle lane when a slower van in the left lane began a right lane "
+        "change in front of the Waymo AV, and the Waymo AV braked. The sedan traveling behind the Waymo AV then "
+        "made contact with the rear of the Waymo AV."
+    )
+    assert ActionKind.CHANGE_LANE not in [k for k, _ in actions(s, "V1")]
+    assert (s.crash.striker, s.crash.type) == ("V2", CrashType.REAR_END)
