@@ -116,6 +116,13 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
+    # Out of its own lane sideways, toward a lane it names or the one it left says: "veered out of its lane"
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:veer|swerv|drift)\w* (?:\w+ )?out of (?:its|their|his|her|the) (?:own |travel )?lane\b", re.I
+        ),
+    ),
     # Into the lane another road user is in, or the one between: a lane change, its side said by the lane left
     # ("V2 in the left adjacent lane ... entered V1's lane")
     (
@@ -143,6 +150,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ),
     ),
 ]
+# A vehicle said to be in the other direction's lane ("V2 in the oncoming lane", "traveling in the opposite
+# lane"): moving sideways from there into another's lane is a move onto the wrong side of the road.
+_IN_OPPOSING = re.compile(
+    r"\b(?:in|from|within) (?:the|an|a) (?:oncoming|opposing|opposite)(?: traffic| travel)? lanes?\b", re.I
+)
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
     r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"
@@ -274,17 +286,19 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
         earlier = [m.span() for m in _AFTER.finditer(done)]
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
-                to: Side | None = None
-                if kind is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
+                act, to = kind, None
+                if act is ActionKind.CHANGE_LANE and _IN_OPPOSING.search(said + done[: m.start()]):
+                    act = ActionKind.RETROGRADE  # out of the oncoming lane into another's: onto the wrong side
+                if act is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
                     side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()])
                     if side is None:
                         continue
                     to = Side(side)
-                if kind is ActionKind.GO_ACROSS and not at_junction:
+                if act is ActionKind.GO_ACROSS and not at_junction:
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
-                found.append((at, Action(kind, to)))
+                found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
         said += done + " "

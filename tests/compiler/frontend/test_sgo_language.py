@@ -132,3 +132,24 @@ def test_an_unnumbered_road_user_does_not_act_for_a_participant() -> None:
     )
     assert ActionKind.CHANGE_LANE not in [k for k, _ in actions(s, "V1")]
     assert (s.crash.striker, s.crash.type) == ("V2", CrashType.REAR_END)
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the sedan in the oncoming lane veered out of its lane and made contact with the left side of the Waymo AV",
+        "the sedan traveling in the opposite lane swerved into the Waymo AV's lane, contacting the front of the "
+        "Waymo AV",
+    ],
+)
+def test_out_of_the_oncoming_lane_into_anothers_is_the_wrong_side(said: str) -> None:
+    s = read(AV + f"The Waymo AV was traveling east on [XXX] when {said}.")
+    assert actions(s, "V2")[-1][0] is ActionKind.RETROGRADE
+
+
+def test_out_of_its_own_lane_is_a_lane_change_away_from_it() -> None:
+    s = read(
+        AV + "The Waymo AV was traveling east on [XXX] in the right lane. The sedan in the left lane drifted out of "
+        "its lane and its passenger side made contact with the driver side of the Waymo AV."
+    )
+    assert (ActionKind.CHANGE_LANE, Side.RIGHT) in actions(s, "V2")
