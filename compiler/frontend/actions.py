@@ -101,7 +101,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bparked\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick |near )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
+            r"|\bto a (?:complete |full |sudden |quick |near |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
+            r"|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),
@@ -227,7 +228,8 @@ _TRAVELLING = re.compile(
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
-    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b",
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b"
+    r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)

@@ -51,7 +51,11 @@ _ASIDE = re.compile(
 )
 _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNORECASE)
 # Where a clause about another road user gives way to the subject's again: "stopped for traffic, then turned".
-_CLAUSE_END = re.compile(r",? (?:and )?then\b|;", re.IGNORECASE)
+# A pronoun that begins a clause means a participant, not the other road user: "yielding to traffic as it
+# prepared to turn", "yielding to approaching traffic, it stopped".
+_CLAUSE_END = re.compile(
+    r",? (?:and )?then\b|;|(?:,|,? (?:as|when|while|until|and|so|before|after)) (?=(?:it|he|she)\b)", re.I
+)
 # A sentence about the place, not about a participant: "The roadway had ...", "It was dark".
 _SCENE = re.compile(
     r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"

@@ -153,3 +153,21 @@ def test_out_of_its_own_lane_is_a_lane_change_away_from_it() -> None:
         "its lane and its passenger side made contact with the driver side of the Waymo AV."
     )
     assert (ActionKind.CHANGE_LANE, Side.RIGHT) in actions(s, "V2")
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "In autonomy, the Waymo AV came to a stop at the light. The sedan behind the Waymo AV then rear-ended it.",
+        "As the Waymo AV moved ahead, yielding to approaching traffic, it stopped again. The sedan traveling "
+        "behind the Waymo AV then made contact with the rear of the Waymo AV.",
+        "The Waymo AV was slowing to a gradual stop for a light when it was rear-ended by the sedan.",
+        "The Waymo AV was leaving a parking lot and yielding to traffic as it stopped at the curb line, when the "
+        "sedan made contact with the rear of the Waymo AV.",
+    ],
+)
+def test_a_stop_said_any_way_is_the_last_move(said: str) -> None:
+    """A pronoun after the other road users ("traffic, it stopped") is the participant again; "came to a stop"
+    describes a vehicle."""
+    s = read(AV + said)
+    assert actions(s, "V1")[-1][0] is ActionKind.STOP
