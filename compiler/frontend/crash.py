@@ -92,8 +92,12 @@ def _kind(part: str) -> CrashType | None:
     said = set(words)
     if said & {"door", "mirror", "rearview"}:
         return CrashType.SIDE
+    if "cab" in said:  # a truck's cab is its front, whichever of its sides met ("the driver side of the cab")
+        return CrashType.FRONTAL
     ends = [w for w in words if w in _FRONT_PARTS or w in _REAR_PARTS]
-    corner = said & {"corner", "bumper"} or re.search(r"\bside[- ](?:front|rear|back)$", low)
+    corner = said & {"corner", "bumper"} or re.search(
+        r"\bside[- ](?:front|rear|back)(?:[- ](?:section|portion|part|area|end))?$", low
+    )
     if ends and (words[0] in ends or corner):
         return CrashType.FRONTAL if ends[0] in _FRONT_PARTS else CrashType.REAR_END
     if said & _SIDE_PARTS or ("plane" in said and not ends):
@@ -116,6 +120,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
     parts: list[tuple[int, str, CrashType]] = []
     for pattern in _OWNED:
         for m in pattern.finditer(sentence):
+            # "to the right of V1", "on the left of V2": where something was, not a part of it
+            if m.group("part").lower() in ("left", "right") and re.search(
+                r"\b(?:to|on|at) (?:the )?$", sentence[: m.start("part")], re.I
+            ):
+                continue
             if (kind := _kind(m.group("part"))) is not None:
                 parts.append((m.start(), m.group("v"), kind))
     for m in _OWN_PART.finditer(sentence):
@@ -165,16 +174,47 @@ def _subject_like(sentence: str, name: re.Match[str]) -> bool:
     return owner is not None or not is_object(sentence, name.start())
 
 
-def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
+# A trailer, a truck body or a cab is part of the vehicle: "the passenger side of the trailer of V2", "its trailer
+# (the right side, rear section)", "the driver side of V1 cab". A trailer's sides and rear are its vehicle's.
+_BODY = r"(?:[\w-]+ ){0,2}?(?:trailer|truck body)"
+_BODY_OF = re.compile(
+    r"\b(?:the |a )?" + _BODY + r" (?:of|attached to|towed by|pulled by) (?:the )?(" + _V + r")\b", re.I
+)
+_ITS_BODY = re.compile(r"\b(?:its|his|her|their) " + _BODY + r"(?: \((?:the )?([^)]*)\))?", re.I)
+_THE_BODY = re.compile(r"\bthe " + _BODY + r"\b", re.I)
+_CAB_OF = re.compile(r"\bof (" + _V + r")(?:'s)? cab\b", re.I)
+# "V2 and trailer", "V2 towing a flat-bed trailer": whose "the trailer" is when the sentence does not say
+_TOWING = re.compile(r"\b(" + _V + r"),? (?:and|with|towing|pulling|hauling) (?:an? |its |the )?" + _BODY, re.I)
+
+
+def towing(sents: list[str]) -> str | None:
+    """The one participant the report says tows a trailer, if one does."""
+    found = {m.group(1) for s in sents for m in _TOWING.finditer(s)}
+    return next(iter(found)) if len(found) == 1 else None
+
+
+def _bodies(sentence: str, subject: str | None, tower: str | None) -> str:
+    """The sentence with each trailer, truck body or cab said as the vehicle it belongs to (see `_BODY`)."""
+    sentence = _CAB_OF.sub(r"cab of \1", sentence)
+    sentence = _BODY_OF.sub(r"\1", sentence)
+    if subject is not None:
+        sentence = _ITS_BODY.sub(
+            lambda m: f"the {m.group(1).replace(',', '')} of {subject}" if m.group(1) else subject, sentence
+        )
+    return _THE_BODY.sub(tower, sentence) if tower is not None else sentence
+
+
+def read_sentence(sentence: str, carry: str | None = None, tower: str | None = None) -> Crash | None:
     """The crash one sentence states, or None; `carry` is whom the sentence's pronouns mean when it names
-    no participant before them."""
+    no participant before them, `tower` the participant the report says tows a trailer."""
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
-    names = _names(sentence)
     # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
     first = re.search(r"\b" + _V + r"\b", sentence)
     pronoun = re.search(r"\b(?:it|he|she|its|his|her|it's)\b", sentence, re.I)
     subject = first.group() if first and (pronoun is None or first.start() < pronoun.start()) else carry
+    sentence = _bodies(sentence, subject, tower)
+    names = _names(sentence)
     if m := _REAR_ENDED.search(sentence):
         return Crash(CrashType.REAR_END, m.group("a"), m.group("b"))
     parts = _parts(sentence, subject)
@@ -221,8 +261,9 @@ def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash
 def read_crash_at(sents: list[str], impact: int, carry: str | None = None) -> tuple[Crash, int]:
     """`read_crash`, and the index of the sentence it was read from (-1: none)."""
     order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
+    tower = towing(sents)
     for i in order:
-        crash = read_sentence(sents[i], carry if i == impact else None)
+        crash = read_sentence(sents[i], carry if i == impact else None, tower)
         if crash is not None:
             return crash, i
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:

@@ -171,3 +171,46 @@ def test_a_stop_said_any_way_is_the_last_move(said: str) -> None:
     describes a vehicle."""
     s = read(AV + said)
     assert actions(s, "V1")[-1][0] is ActionKind.STOP
+
+
+@pytest.mark.parametrize(
+    ("sentence", "tower", "want"),
+    [
+        # a trailer's rear is its tower's rear; a cab is the front of its truck, whichever side of it met
+        (
+            "As V2 pulled ahead, its trailer (the left side, rear section) drifted over and made contact with the "
+            "passenger side of V1 cab.",
+            None,
+            ("V1", "V2", CrashType.REAR_END),
+        ),
+        (
+            "V1 was waiting when the driver side of the box trailer attached to V2 made contact with the front "
+            "driver side corner of V1.",
+            None,
+            ("V1", "V2", CrashType.SIDE),
+        ),
+        (
+            "V1 braked late and made contact with the rear of the flat-bed trailer.",
+            "V2",
+            ("V1", "V2", CrashType.REAR_END),
+        ),
+        # "to the left of V1" is where V2 went, not a part of V1
+        (
+            "V2 moved up to the left of V1 and the driver side of V2 made contact with the front passenger side of V1.",
+            None,
+            ("V1", "V2", CrashType.SIDE),
+        ),
+    ],
+)
+def test_a_trailer_or_a_cab_is_part_of_its_vehicle(sentence: str, tower: str | None, want: tuple) -> None:
+    crash = read_sentence(sentence, None, tower)
+    assert crash is not None and (crash.striker, crash.victim, crash.type) == want
+
+
+def test_the_report_says_which_vehicle_tows_the_trailer() -> None:
+    s = read(
+        "On May [XXX], 2024 a Waymo Autonomous Vehicle (Waymo AV) was in a collision involving a pickup truck and "
+        "trailer on [XXX]. The pickup truck towing a utility trailer was passing the Waymo AV on the left. The "
+        "Waymo AV slowed, and the front of the Waymo AV made contact with the rear corner of the utility trailer."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V1", "V2", CrashType.REAR_END)
