@@ -139,7 +139,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     # the left turn lane": a lane change to the side it names
     (
         ActionKind.CHANGE_LANE,
-        re.compile(r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer)\w* (?:\w+ )?around\b", re.I),
+        re.compile(
+            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b",
+            re.I,
+        ),
     ),
     # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
     (
@@ -228,7 +231,7 @@ _TRAVELLING = re.compile(
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
-    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b"
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b|\bdrove\b"
     r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b",
     re.I,
 )

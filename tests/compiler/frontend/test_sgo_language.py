@@ -214,3 +214,12 @@ def test_the_report_says_which_vehicle_tows_the_trailer() -> None:
         "Waymo AV slowed, and the front of the Waymo AV made contact with the rear corner of the utility trailer."
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V1", "V2", CrashType.REAR_END)
+
+
+def test_driving_around_another_describes_the_vehicle() -> None:
+    """ "drove around the Waymo AV" is a move: the sedan is described, and goes by on the side said."""
+    s = read(
+        AV + "The Waymo AV was stopped at the curb. The sedan drove around the left side of the Waymo AV and its "
+        "rear passenger side made contact with the rear driver side door of the Waymo AV."
+    )
+    assert actions(s, "V2") == [(ActionKind.FOLLOW_LANE, None), (ActionKind.CHANGE_LANE, Side.LEFT)]
