@@ -69,6 +69,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
             r"|\bfrom (?:a|the) (?:private )?drive(?:way)?\b"
             r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
+            # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
+            # "departing a parking space", "pulled out of the parked position"
+            r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
+            r"(?:curb(?:side)?|kerb|parking (?:space|spot|stall|position)|parked position)\b"
             r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
             re.I,
         ),
@@ -232,7 +236,7 @@ _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
     r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b|\bdrove\b"
-    r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b",
+    r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b|\bdepart(?:ed|ing)\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
@@ -289,6 +293,8 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
         if meant is not None:
             found += _bare_turns(piece, done, meant)
         earlier = [m.span() for m in _AFTER.finditer(done)]
+        # "pulled out of the parked position": the state it left came before it entered the road
+        left_from = [m.span() for k, p in _PATTERNS if k is ActionKind.DRIVE_INTO for m in p.finditer(done)]
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
                 act, to = kind, None
@@ -303,6 +309,8 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
+                if act is ActionKind.STOP and (inside := next((a for a, b in left_from if a < m.start() < b), None)):
+                    at = piece.at + inside - 1
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]

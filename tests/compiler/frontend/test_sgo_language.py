@@ -223,3 +223,16 @@ def test_driving_around_another_describes_the_vehicle() -> None:
         "rear passenger side made contact with the rear driver side door of the Waymo AV."
     )
     assert actions(s, "V2") == [(ActionKind.FOLLOW_LANE, None), (ActionKind.CHANGE_LANE, Side.LEFT)]
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the sedan pulled out of the parked position on the right and made contact with the Waymo AV",
+        "the sedan pulled away from the curb and made contact with the Waymo AV",
+        "the sedan, departing a parking space, made contact with the Waymo AV",
+    ],
+)
+def test_leaving_the_curb_or_a_parking_space_enters_the_road(said: str) -> None:
+    s = read(AV + f"The Waymo AV was traveling north on [XXX] at the intersection with [XXX] when {said}.")
+    assert [k for k, _ in actions(s, "V2")][-1] is ActionKind.DRIVE_INTO
