@@ -196,9 +196,12 @@ _CLAUSE = (
     r"|made|took|got|left|swung|cut)\b))"
 )
 _INTENT = re.compile(
-    r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior|(?:an? )?(?:opportunity|chance))"
-    r"(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
+    r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about"
+    r"|prepar(?:ing|ed|es)|waiting|waited|await(?:ing|ed|s)?|in order|so as|prior"
+    r"|(?:an? )?(?:opportunity|chance|opening|gap)"
+    # "in anticipation of turning right", "in preparation for a left turn": what it was getting ready to do
+    r"|in (?:anticipation|preparation|advance))"
+    r"(?P<what> (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
 # A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant

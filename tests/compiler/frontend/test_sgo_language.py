@@ -236,3 +236,20 @@ def test_driving_around_another_describes_the_vehicle() -> None:
 def test_leaving_the_curb_or_a_parking_space_enters_the_road(said: str) -> None:
     s = read(AV + f"The Waymo AV was traveling north on [XXX] at the intersection with [XXX] when {said}.")
     assert [k for k, _ in actions(s, "V2")][-1] is ActionKind.DRIVE_INTO
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "slowed to a stop in anticipation of turning right into a driveway",
+        "came to a stop at the light in preparation for a left turn",
+        "came to a stop for a pedestrian as it prepared to make a right turn",
+        "remained stopped at the line to await an opening to complete the left turn",
+    ],
+)
+def test_getting_ready_to_turn_is_not_the_turn(said: str) -> None:
+    s = read(
+        AV + f"The Waymo AV was traveling north on [XXX] and {said} at the intersection with [XXX]. The sedan "
+        "behind the Waymo AV then made contact with the rear of the Waymo AV."
+    )
+    assert actions(s, "V1")[-1][0] is ActionKind.STOP
