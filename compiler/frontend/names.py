@@ -105,7 +105,16 @@ def _automated(text: str) -> tuple[str, str] | None:
         return None
     if first is not None:
         said = first.group()
+        # "the Waymo AVs lane": a possessive written without its apostrophe
+        text = re.sub(r"\b((?i:the) (?:[A-Z][\w.]* )?AV)s\b(?= (?!(?:were|are|have|had)\b)[a-z])", r"\1's", text)
         text = _AV.sub("V1", text)
+        # the brand alone names it too once it has been said with it: "the Waymo was stopped", "the Waymo's"
+        if (b := re.match(r"(?:(?i:an?|the|our|its) )?([A-Z][\w.-]*) ", said)) and not re.match(_AV_WORDS, b[1], re.I):
+            text = re.sub(
+                r"\b[Tt]he " + re.escape(b[1]) + r"\b(?![\w-])(?! (?:[A-Z]|vehicle|car|truck|shuttle|bus|fleet)\b)",
+                "V1",
+                text,
+            )
         text = re.sub(r"\b(?:an?|the) [A-Z][\w.]* (?:vehicle|car|truck|shuttle)\b(?=\s*\(\"?V1\"?\))", "V1", text)
     if brand is not None and (first is None or brand.start() < first.start() or brand.group(1) in said):
         said = brand.group() if first is None else said
