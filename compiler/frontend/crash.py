@@ -252,6 +252,22 @@ def _said_part(sentence: str) -> CrashType | None:
     return _kind(m.group(1)) if m else None
 
 
+# "V2 was rear-ended by V3, causing the front of V2 to make contact with the rear of V1": a chain collision.
+_PUSHED = re.compile(r"\b(?:causing|pushing|forcing|propelling|which pushed|which caused) (?P<rest>[^.;]*)", re.I)
+_TO_MEET = re.compile(r"\bto (?:make contact|strike|hit|collide|contact|impact|rear-end)", re.I)
+_MET = {"make contact": "made contact", "strike": "struck", "hit": "hit", "collide": "collided", "contact": "contacted"}
+
+
+def _pushed_into_v1(sentence: str, crash: Crash, tower: str | None) -> Crash:
+    """In a chain collision the automated vehicle's crash, the IR's subject, is the contact it is in: when the
+    first impact does not involve V1 and the sentence says it pushed one of them into V1, that contact."""
+    if "V1" in (crash.striker, crash.victim) or not (m := _PUSHED.search(sentence)):
+        return crash
+    rest = _TO_MEET.sub(lambda t: _MET.get(t.group()[3:].lower(), t.group()[3:]), m.group("rest"))
+    pushed = read_sentence(rest, None, tower)
+    return pushed if pushed is not None and "V1" in (pushed.striker, pushed.victim) else crash
+
+
 def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash:
     """The first impact's crash: read from its sentence (index `impact`), else from a later sentence that
     restates it, else from an earlier one that says "head-on"."""
@@ -265,7 +281,7 @@ def read_crash_at(sents: list[str], impact: int, carry: str | None = None) -> tu
     for i in order:
         crash = read_sentence(sents[i], carry if i == impact else None, tower)
         if crash is not None:
-            return crash, i
+            return _pushed_into_v1(sents[i], crash, tower), i
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:
         return Crash(CrashType.FRONTAL), said
     return Crash(), -1

@@ -162,15 +162,18 @@ def label_parties(text: str) -> tuple[str, str | None]:
     report numbers them itself."""
     if re.search(r"\bV1\b", _LABEL.sub(" ", text)):
         return text, None  # numbered outside any labels: the report's own numbering
+    labelled = _labels(text)
+    if labelled is not None:
+        if re.search(r"\bV1\b", labelled[0]) or (automated := _automated(labelled[0])) is None:
+            return labelled
+        # It labels the others ("a sedan (Vehicle 2)") but not itself: the automated vehicle is V1.
+        return automated[0], f"{labelled[1]}; the automated vehicle ('{automated[1]}') is V1"
     if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
         # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
-        automated = _automated(text) if not _LABELLED.search(text) else None
+        automated = _automated(text)
         if automated is None:
             return text, None
         return automated[0], f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
-    labelled = _labels(text)
-    if labelled is not None:
-        return labelled
     automated = _automated(text)
     if automated is None:
         return text, None

@@ -25,3 +25,12 @@ def test_an_apostrophe_left_out_is_still_a_possessive() -> None:
 def test_the_brands_fleet_is_not_the_vehicle() -> None:
     text, _ = label_parties("The Waymo AV was in a collision involving a sedan. The Waymo fleet was not affected.")
     assert "The Waymo fleet" in text
+
+
+def test_labels_for_the_others_leave_the_automated_vehicle_v1() -> None:
+    text, note = label_parties(
+        "The Waymo AV was stopped at a light with a sedan (Vehicle 2) behind it. The sedan then made contact with "
+        "the rear of the Waymo AV."
+    )
+    assert text.startswith("V1 was stopped") and "V2 then made contact with the rear of V1" in text
+    assert note is not None and "the automated vehicle ('The Waymo AV') is V1" in note

@@ -253,3 +253,12 @@ def test_getting_ready_to_turn_is_not_the_turn(said: str) -> None:
         "behind the Waymo AV then made contact with the rear of the Waymo AV."
     )
     assert actions(s, "V1")[-1][0] is ActionKind.STOP
+
+
+def test_in_a_chain_collision_the_crash_is_the_automated_vehicles() -> None:
+    s = read(
+        "On June [XXX], 2024 a Waymo Autonomous Vehicle (Waymo AV) was in a collision involving two sedans. The "
+        "Waymo AV was stopped at a red light with a sedan (Vehicle 2) behind it. Vehicle 2 was rear-ended by a "
+        "pickup truck (Vehicle 3), pushing the front of Vehicle 2 to make contact with the rear of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
