@@ -153,7 +153,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.RETROGRADE,
         re.compile(
             r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
-            r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b",
+            r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b"
+            # passing by way of the other direction's lane: "passed V1 by driving in the oncoming traffic lane"
+            r"|\bpass\w*\b[^.;]{0,40}?\b(?:in|into|using|through|via) (?:the |an )?(?:oncoming|opposing|opposite)"
+            r"(?: traffic| travel)? lanes?\b",
             re.I,
         ),
     ),

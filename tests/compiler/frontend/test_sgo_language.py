@@ -262,3 +262,18 @@ def test_in_a_chain_collision_the_crash_is_the_automated_vehicles() -> None:
         "pickup truck (Vehicle 3), pushing the front of Vehicle 2 to make contact with the rear of the Waymo AV."
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the sedan behind the Waymo AV passed it by driving in the oncoming traffic lane",
+        "the sedan passed the Waymo AV in the opposing lane",
+    ],
+)
+def test_passing_by_way_of_the_oncoming_lane_is_the_wrong_side(said: str) -> None:
+    s = read(
+        AV + f"The Waymo AV was stopped at a stop sign on [XXX] when {said}, and the passenger side of the sedan "
+        "made contact with the driver side of the Waymo AV."
+    )
+    assert actions(s, "V2")[-1][0] is ActionKind.RETROGRADE
