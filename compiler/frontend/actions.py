@@ -241,12 +241,14 @@ _TRAVELLING = re.compile(
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
-    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b|\bdrove\b"
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing|es)?\b|\bdrove\b|\baccelerat"
     r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b|\bdepart(?:ed|ing)\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
-_MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
+_MOVING_STRIKER = re.compile(
+    r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bbehind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I
+)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO)
 _TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)

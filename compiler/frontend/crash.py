@@ -23,7 +23,7 @@ _WORD = (
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
 _STRIKE = (
     r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact (?:with|to))"
+    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?)"
 )
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"

@@ -277,3 +277,20 @@ def test_passing_by_way_of_the_oncoming_lane_is_the_wrong_side(said: str) -> Non
         "made contact with the driver side of the Waymo AV."
     )
     assert actions(s, "V2")[-1][0] is ActionKind.RETROGRADE
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the sedan directly behind the Waymo AV attempted to pass the left side of the Waymo AV",
+        "the sedan immediately behind the Waymo AV began to accelerate toward the right side of the Waymo AV",
+    ],
+)
+def test_a_vehicle_passing_or_accelerating_is_described(said: str) -> None:
+    s = read(AV + f"The Waymo AV was stopped at a red light on [XXX] when {said} and made contact with it.")
+    assert actions(s, "V2") != []
+
+
+def test_a_striker_behind_the_other_was_driving() -> None:
+    s = read(AV + "The Waymo AV was slowing in traffic on [XXX] when the sedan behind made contact at 10 mph.")
+    assert actions(s, "V2") == [(ActionKind.FOLLOW_LANE, None)]
