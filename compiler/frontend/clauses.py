@@ -46,7 +46,9 @@ _OTHER = re.compile(
 # traveling north", "restricted by V2 making the right turn".
 # So is one said in a state: "approached V2 stopped in the left lane", "passed V2 double parked".
 _ASIDE = re.compile(
-    r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:which|that|who)\b|\w+ing\b"
+    # (not "passed V1 using the opposing lane": a preposition in -ing says how the subject did it)
+    r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:which|that|who)\b"
+    r"|(?!(?:using|including|during|regarding|according|concerning)\b)\w+ing\b"
     r"|(?:double[- ])?(?:stopped|parked|stationary)\b)"
 )
 _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNORECASE)

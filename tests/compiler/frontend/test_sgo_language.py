@@ -269,6 +269,7 @@ def test_in_a_chain_collision_the_crash_is_the_automated_vehicles() -> None:
     [
         "the sedan behind the Waymo AV passed it by driving in the oncoming traffic lane",
         "the sedan passed the Waymo AV in the opposing lane",
+        "the sedan passed the Waymo AV using the opposing lane",  # "using" says how the sedan passed
     ],
 )
 def test_passing_by_way_of_the_oncoming_lane_is_the_wrong_side(said: str) -> None:
