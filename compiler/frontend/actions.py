@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.clauses import Piece
+from sovarc.compiler.frontend.lanes import lane_change_side
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
@@ -62,7 +63,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull)\w*(?: \w+){0,6}? (?:in)?to the (?:left|right) lane\b"
+            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull|maneuver|manoeuvr)\w*(?: \w+){0,6}? (?:in)?to the "
+            r"(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b"
             r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
             r"(?:the|an?) (?:\w+ ){0,2}lane\b",
             re.I,
@@ -93,6 +95,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
             r"|\bfrom (?:a|the) (?:private )?drive(?:way)?\b"
             r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
+            # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
+            # "departing a parking space", "pulled out of the parked position"
+            r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
+            r"(?:curb(?:side)?|kerb|parking (?:space|spot|stall|position)|parked position)\b"
             r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
             re.I,
         ),
@@ -125,7 +131,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick |near )?(?:stop|halt)\b|\bhalted\b|\bidling\b"
+            r"|\bto a (?:complete |full |sudden |quick |near |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
+            r"|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),
@@ -140,20 +147,51 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
+    # Out of its own lane sideways, toward a lane it names or the one it left says: "veered out of its lane"
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:veer|swerv|drift)\w* (?:\w+ )?out of (?:its|their|his|her|the) (?:own |travel )?lane\b", re.I
+        ),
+    ),
+    # Into the lane another road user is in, or the one between: a lane change, its side said by the lane left
+    # ("V2 in the left adjacent lane ... entered V1's lane")
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
+            r"|the (?:center|centre|middle) (?:travel )?lane)\b",
+            re.I,
+        ),
+    ),
     # Around another road user, to one side: "maneuvered around the left side of V1", "steered around V1 using
     # the left turn lane": a lane change to the side it names
     (
         ActionKind.CHANGE_LANE,
-        re.compile(r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer)\w* (?:\w+ )?around\b", re.I),
+        re.compile(
+            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b",
+            re.I,
+        ),
     ),
     # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
     (
         ActionKind.RETROGRADE,
         re.compile(
-            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b", re.I
+            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
+            r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b"
+            # passing by way of the other direction's lane: "passed V1 by driving in the oncoming traffic lane"
+            r"|\bpass\w*\b[^.;]{0,40}?\b(?:in|into|using|through|via) (?:the |an )?(?:oncoming|opposing|opposite)"
+            r"(?: traffic| travel)? lanes?\b",
+            re.I,
         ),
     ),
 ]
+# A vehicle said to be in the other direction's lane ("V2 in the oncoming lane", "traveling in the opposite
+# lane"): moving sideways from there into another's lane is a move onto the wrong side of the road.
+_IN_OPPOSING = re.compile(
+    r"\b(?:in|from|within) (?:the|an|a) (?:oncoming|opposing|opposite)(?: traffic| travel)? lanes?\b", re.I
+)
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
     r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"
@@ -187,8 +225,12 @@ _CLAUSE = (
     r"|made|took|got|left|swung|cut)\b))"
 )
 _INTENT = re.compile(
-    r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about|preparing"
-    r"|waiting|waited|awaiting|in order|so as|prior)(?P<what> (?:to|on|for)\b(?:[^.,;]*?)" + _CLAUSE + ")",
+    r"\b(?P<lead>intend(?:ed|ing|s)?|planning|planned|plans|wanted|wanting|was going|were going|about"
+    r"|prepar(?:ing|ed|es)|waiting|waited|await(?:ing|ed|s)?|in order|so as|prior"
+    r"|(?:an? )?(?:opportunity|chance|opening|gap)"
+    # "in anticipation of turning right", "in preparation for a left turn": what it was getting ready to do
+    r"|in (?:anticipation|preparation|advance))"
+    r"(?P<what> (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
 # A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
@@ -225,12 +267,15 @@ _TRAVELLING = re.compile(
 _DESCRIBED = re.compile(
     r"\b[VP]\d\b,? (?:(?:was|is) )?(?:an?|the) |\b(?:north|south|east|west)(?:bound|ward)?\b|\blane\b|\bstopped\b"
     r"|\bparked\b|\btravel|\bdriv(?:ing|e)\b|\bturn|\bapproach|\bproceed|\benter|\bpull"
-    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing)\b|\bback(?:ed|ing)?\b(?! of)"
-    r"|\brevers|\bbackwards?\b",
+    r"|\bslow(?:ed|ing)\b|\bbrak(?:ed|ing)\b|\bmaneuver|\bmanoeuvr|\bpass(?:ed|ing|es)?\b|\bdrove\b|\baccelerat"
+    r"|\bto a (?:\w+ )?stop\b|\bexit(?:ed|ing)\b|\byield(?:ed|ing)\b|\bdepart(?:ed|ing)\b"
+    r"|\bback(?:ed|ing)?\b(?! of)|\brevers|\bbackwards?\b",
     re.I,
 )
 _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I)
-_MOVING_STRIKER = re.compile(r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I)
+_MOVING_STRIKER = re.compile(
+    r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bbehind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I
+)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO, ActionKind.PARKED)
 _TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
@@ -275,6 +320,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
     near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
     meant = _meant_turn(pieces)
     found: list[tuple[int, Action]] = []
+    said = ""  # what was said of it before this piece: where its lane was
     for piece in pieces:
         done = what_was_done(piece.text)
         if near:
@@ -282,21 +328,28 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
         if meant is not None:
             found += _bare_turns(piece, done, meant)
         earlier = [m.span() for m in _AFTER.finditer(done)]
+        # "pulled out of the parked position": the state it left came before it entered the road
+        left_from = [m.span() for k, p in _PATTERNS if k is ActionKind.DRIVE_INTO for m in p.finditer(done)]
         for kind, pattern in _PATTERNS:
             for m in pattern.finditer(done):
-                to: Side | None = None
-                if kind is ActionKind.CHANGE_LANE:  # to the side named last: "from the left lane into the right"
-                    sides = re.findall(r"\b(left|right)\b", done[m.start() : max(m.end(), m.start() + 60)], re.I)
-                    if not sides:
+                act, to = kind, None
+                if act is ActionKind.CHANGE_LANE and _IN_OPPOSING.search(said + done[: m.start()]):
+                    act = ActionKind.RETROGRADE  # out of the oncoming lane into another's: onto the wrong side
+                if act is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
+                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()])
+                    if side is None:
                         continue
-                    to = Side(sides[-1].lower() if m.end() - m.start() > 20 else sides[0].lower())
-                if kind is ActionKind.GO_ACROSS and not at_junction:
+                    to = Side(side)
+                if act is ActionKind.GO_ACROSS and not at_junction:
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
-                found.append((at, Action(kind, to)))
+                if act is ActionKind.STOP and (inside := next((a for a, b in left_from if a < m.start() < b), None)):
+                    at = piece.at + inside - 1
+                found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
+        said += done + " "
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
     if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
         for piece in pieces:

@@ -19,7 +19,8 @@ from dataclasses import dataclass
 _OBJECT_BEFORE = re.compile(
     r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|toward|towards|into|past|struck|hit|impacted|contacted|"
     r"striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|pass|passed|passing|"
-    r"followed|following)|'s) (?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
+    r"followed|following|around|alongside|beside|next to|approached|approaching|overtook|overtaking)|'s) "
+    r"(?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
     re.IGNORECASE,
 )
 _SUBJECT_OF = re.compile(
@@ -34,17 +35,29 @@ _OTHER = re.compile(
     r"\b(?:an?|another|the|other|one|several)\s+(?:(?:non-?contact|uninvolved|other|third|emergency|unknown|"
     r"unidentified|lead|leading|school|fire|police)\s+)+(?:[\w-]+\s+){0,2}?(?P<noun>vehicles?|cars?|trucks?|"
     r"bus(?:es)?|vans?|pickups?|motorists?|drivers?|motorcycles?|tractor-trailers?|semis?)\b"
-    r"|\b(?:an?|another)\s+(?:vehicles?|cars?|trucks?|motorists?)\b(?! (?:involved|[VP]\d))"
+    # "a slower traveling van", "another white sedan": one not numbered is none of the participants
+    r"|(?<!\bwas )(?<!\bis )(?<!\bas )\b(?:an?|another)\s+(?:[a-z][a-z-]*\s+){0,2}?(?:vehicles?|cars?|trucks?|vans?|"
+    r"suvs?|sedans?|pickups?|motorists?|buses)\b(?! (?:involved|[VP]\d))"
     r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
     r"|\b(?:vehicles|traffic)\b(?! (?:signal|light|control|device|lane|way|island|count|volume))",
     re.IGNORECASE,
 )
 # An object described on the spot is the subject of the description: "struck V2, a 2000 Honda that was
 # traveling north", "restricted by V2 making the right turn".
-_ASIDE = re.compile(r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:which|that|who)\b|\w+ing\b)")
+# So is one said in a state: "approached V2 stopped in the left lane", "passed V2 double parked".
+_ASIDE = re.compile(
+    # (not "passed V1 using the opposing lane": a preposition in -ing says how the subject did it)
+    r", (?:an?|the) |,? (?:(?:an?|the) (?:[\w-]+ )*?\d{4}\b|(?:which|that|who)\b"
+    r"|(?!(?:using|including|during|regarding|according|concerning)\b)\w+ing\b"
+    r"|(?:double[- ])?(?:stopped|parked|stationary)\b)"
+)
 _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNORECASE)
 # Where a clause about another road user gives way to the subject's again: "stopped for traffic, then turned".
-_CLAUSE_END = re.compile(r",? (?:and )?then\b|;", re.IGNORECASE)
+# A pronoun that begins a clause means a participant, not the other road user: "yielding to traffic as it
+# prepared to turn", "yielding to approaching traffic, it stopped".
+_CLAUSE_END = re.compile(
+    r",? (?:and )?then\b|;|(?:,|,? (?:as|when|while|until|and|so|before|after)) (?=(?:it|he|she)\b)", re.I
+)
 # A sentence about the place, not about a participant: "The roadway had ...", "It was dark".
 _SCENE = re.compile(
     r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"

@@ -16,13 +16,14 @@ from sovarc.dsl.ir import Crash, CrashType
 
 _V = r"(?:[VP]\d)"
 _WORD = (
-    r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumper|corner|plane|door|fender|wheel|"
-    r"quarter|panel|drivers?'?s?|passenger'?s?|area|portion|section|part)"
+    r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumper|corner|plane|door|fender|wheel|tire|"
+    r"quarter|panel|drivers?'?s?|passenger'?s?|area|portion|section|part|sensors?|housing|(?:rearview |side )?mirror|"
+    r"cab|hood|grille|headlights?|trunk|tailgate|taillights?|hatch)"
 )
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
 _STRIKE = (
-    r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-ended"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact (?:with|to))"
+    r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
+    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?)"
 )
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
@@ -33,8 +34,10 @@ _OWNED = [
     ),
     re.compile(r"\b(?P<v>" + _V + r")'s (?P<part>" + _PART + r")\b", re.I),  # V2's rear
     # V2 in the left side, V1 was struck on the right side
+    # (not "passed V1 on the left": a bare side after a verb that is no strike is where it passed)
     re.compile(
-        r"\b(?P<v>" + _V + r")(?: was| were)?(?: \w+ed)? (?:in|on) (?:the |its |his |her )?(?P<part>" + _PART + r")\b",
+        r"\b(?P<v>" + _V + r")(?: was| were)?(?: \w+ed)? (?:in|on) (?:the |its |his |her )?"
+        r"(?P<part>(?!(?:left|right)\b(?![- ]" + _WORD + r"))" + _PART + r")\b",
         re.I,
     ),
 ]
@@ -59,33 +62,51 @@ _AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bb
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended)\b", re.I)
-_REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?P<b>" + _V + r")\b", re.I)
+_REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?:the )?" + _STATE + r"(?P<b>" + _V + r")\b", re.I)
 _UNTIED_PART = re.compile(r"\b(?:front|rear|side|bumper|corner|end)\b", re.I)
 _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
-_FROM_BEHIND = re.compile(r"\bfrom behind\b", re.I)
+# The striker came from behind the victim: "from behind", "from the rear", "V2 behind V1", "V2 traveling directly
+# behind": one that meets another it follows meets its rear, whatever part of it the report names ("the bumper").
+_FROM_BEHIND = re.compile(r"\bfrom (?:behind|the rear)\b", re.I)
+_FOLLOWER = r"\b{},? (?:(?:that|which) (?:was|had been) )?(?:\w+ing )?(?:directly |right |immediately )?behind\b"
 _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 
+# Parts that are one end of a vehicle, or one side of it, whatever words go with them.
+_FRONT_PARTS = frozenset(("front", "frontal", "cab", "hood", "grille", "headlight", "headlights"))
+_REAR_PARTS = frozenset(("rear", "back", "trunk", "tailgate", "taillight", "taillights", "hatch"))
+_SIDE_PARTS = frozenset(("side", "door", "panel", "fender", "quarter", "mirror"))
+
+
 def _kind(part: str) -> CrashType | None:
-    words = set(re.split(r"[- ]", part.lower()))
-    # "the front passenger side", "the rear driver side": a side named from the front or rear is that end's
-    # corner, and the end is what met (as NHTSA codes it: Front Right, Rear Left)
-    # corner, and the end is what met (as NHTSA codes it: Front Right, Rear Left); so is an end's corner or
-    # bumper named from a side ("the driver side front corner", "the passenger side front bumper")
+    """The crash type a part says when the victim's: an end (frontal, rear_end) or a side.
+
+    The words before the head noun say where on it: "the right front side" and "the left front" are a side
+    (its front half), as the labelled reports have it. A part named first by an end is that end's corner, and a
+    corner is the end that met, as NHTSA codes it (Front Right, Rear Left): "the front passenger side", "the
+    rear left sensor"; so is an end's bumper or corner named from a side ("the driver side front corner"), and
+    an end named after a side ("the driver's side rear"). A door or a mirror is the side whatever end it is
+    near: neither is at a corner."""
     low = part.lower()
-    if m := re.match(r"(front|rear|back)[- ](?:left|right|drivers?'?s?|passenger'?s?)[- ]side\b(?![- ]door)", low):
-        return CrashType.FRONTAL if m.group(1) == "front" else CrashType.REAR_END
-    if (m := re.search(r"\b(front|rear|back)[- ](?:corner|bumper)\b", low)) and not words & {"door", "panel"}:
-        return CrashType.FRONTAL if m.group(1) == "front" else CrashType.REAR_END
-    if words & {"side", "door", "panel", "fender", "quarter"} or (
-        "plane" in words and not words & {"front", "frontal"}
-    ):
+    words = re.split(r"[- ]", low)
+    said = set(words)
+    if said & {"door", "mirror", "rearview"}:
         return CrashType.SIDE
-    if words & {"rear", "back"} or ("end" in words and "front" not in words):
-        return CrashType.REAR_END
-    if words & {"front", "frontal"}:
+    if "cab" in said:  # a truck's cab is its front, whichever of its sides met ("the driver side of the cab")
         return CrashType.FRONTAL
-    if words <= {"left", "right"}:  # "the front of V2 contacted the left of V1"
+    ends = [w for w in words if w in _FRONT_PARTS or w in _REAR_PARTS]
+    corner = said & {"corner", "bumper"} or re.search(
+        r"\bside[- ](?:front|rear|back)(?:[- ](?:section|portion|part|area|end))?$", low
+    )
+    if ends and (words[0] in ends or corner):
+        return CrashType.FRONTAL if ends[0] in _FRONT_PARTS else CrashType.REAR_END
+    if said & _SIDE_PARTS or ("plane" in said and not ends):
+        return CrashType.SIDE
+    if ends:  # "the left rear", "the right front": no side noun, the end is what is named
+        return CrashType.FRONTAL if ends[0] in _FRONT_PARTS else CrashType.REAR_END
+    if "end" in said:
+        return CrashType.REAR_END
+    if said <= {"left", "right"}:  # "the front of V2 contacted the left of V1"
         return CrashType.SIDE
     return None
 
@@ -99,6 +120,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
     parts: list[tuple[int, str, CrashType]] = []
     for pattern in _OWNED:
         for m in pattern.finditer(sentence):
+            # "to the right of V1", "on the left of V2": where something was, not a part of it
+            if m.group("part").lower() in ("left", "right") and re.search(
+                r"\b(?:to|on|at) (?:the )?$", sentence[: m.start("part")], re.I
+            ):
+                continue
             if (kind := _kind(m.group("part"))) is not None:
                 parts.append((m.start(), m.group("v"), kind))
     for m in _OWN_PART.finditer(sentence):
@@ -148,14 +174,47 @@ def _subject_like(sentence: str, name: re.Match[str]) -> bool:
     return owner is not None or not is_object(sentence, name.start())
 
 
-def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
+# A trailer, a truck body or a cab is part of the vehicle: "the passenger side of the trailer of V2", "its trailer
+# (the right side, rear section)", "the driver side of V1 cab". A trailer's sides and rear are its vehicle's.
+_BODY = r"(?:[\w-]+ ){0,2}?(?:trailer|truck body)"
+_BODY_OF = re.compile(
+    r"\b(?:the |a )?" + _BODY + r" (?:of|attached to|towed by|pulled by) (?:the )?(" + _V + r")\b", re.I
+)
+_ITS_BODY = re.compile(r"\b(?:its|his|her|their) " + _BODY + r"(?: \((?:the )?([^)]*)\))?", re.I)
+_THE_BODY = re.compile(r"\bthe " + _BODY + r"\b", re.I)
+_CAB_OF = re.compile(r"\bof (" + _V + r")(?:'s)? cab\b", re.I)
+# "V2 and trailer", "V2 towing a flat-bed trailer": whose "the trailer" is when the sentence does not say
+_TOWING = re.compile(r"\b(" + _V + r"),? (?:and|with|towing|pulling|hauling) (?:an? |its |the )?" + _BODY, re.I)
+
+
+def towing(sents: list[str]) -> str | None:
+    """The one participant the report says tows a trailer, if one does."""
+    found = {m.group(1) for s in sents for m in _TOWING.finditer(s)}
+    return next(iter(found)) if len(found) == 1 else None
+
+
+def _bodies(sentence: str, subject: str | None, tower: str | None) -> str:
+    """The sentence with each trailer, truck body or cab said as the vehicle it belongs to (see `_BODY`)."""
+    sentence = _CAB_OF.sub(r"cab of \1", sentence)
+    sentence = _BODY_OF.sub(r"\1", sentence)
+    if subject is not None:
+        sentence = _ITS_BODY.sub(
+            lambda m: f"the {m.group(1).replace(',', '')} of {subject}" if m.group(1) else subject, sentence
+        )
+    return _THE_BODY.sub(tower, sentence) if tower is not None else sentence
+
+
+def read_sentence(sentence: str, carry: str | None = None, tower: str | None = None) -> Crash | None:
     """The crash one sentence states, or None; `carry` is whom the sentence's pronouns mean when it names
-    no participant before them."""
-    names = _names(sentence)
+    no participant before them, `tower` the participant the report says tows a trailer."""
+    # "rear ended", "rear-ending": one verb however it is spelt
+    sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
     # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
     first = re.search(r"\b" + _V + r"\b", sentence)
     pronoun = re.search(r"\b(?:it|he|she|its|his|her|it's)\b", sentence, re.I)
     subject = first.group() if first and (pronoun is None or first.start() < pronoun.start()) else carry
+    sentence = _bodies(sentence, subject, tower)
+    names = _names(sentence)
     if m := _REAR_ENDED.search(sentence):
         return Crash(CrashType.REAR_END, m.group("a"), m.group("b"))
     parts = _parts(sentence, subject)
@@ -174,7 +233,7 @@ def read_sentence(sentence: str, carry: str | None = None) -> Crash | None:
     if victim is None:  # a single vehicle that struck something with its front ("struck a tree with its front")
         own = [kind for _, who, kind in parts if who == striker]
         return Crash(CrashType.FRONTAL, striker) if own == [CrashType.FRONTAL] else None
-    if _FROM_BEHIND.search(sentence):
+    if _FROM_BEHIND.search(sentence) or re.search(_FOLLOWER.format(striker), sentence, re.I):
         return Crash(CrashType.REAR_END, striker, victim)
     kind = CrashType.FRONTAL if head_on else _said_part(sentence)
     # "V2 ... made contact with the front of V1": V2 came across V1's path, so V1's front met its side
@@ -193,6 +252,22 @@ def _said_part(sentence: str) -> CrashType | None:
     return _kind(m.group(1)) if m else None
 
 
+# "V2 was rear-ended by V3, causing the front of V2 to make contact with the rear of V1": a chain collision.
+_PUSHED = re.compile(r"\b(?:causing|pushing|forcing|propelling|which pushed|which caused) (?P<rest>[^.;]*)", re.I)
+_TO_MEET = re.compile(r"\bto (?:make contact|strike|hit|collide|contact|impact|rear-end)", re.I)
+_MET = {"make contact": "made contact", "strike": "struck", "hit": "hit", "collide": "collided", "contact": "contacted"}
+
+
+def _pushed_into_v1(sentence: str, crash: Crash, tower: str | None) -> Crash:
+    """In a chain collision the automated vehicle's crash, the IR's subject, is the contact it is in: when the
+    first impact does not involve V1 and the sentence says it pushed one of them into V1, that contact."""
+    if "V1" in (crash.striker, crash.victim) or not (m := _PUSHED.search(sentence)):
+        return crash
+    rest = _TO_MEET.sub(lambda t: _MET.get(t.group()[3:].lower(), t.group()[3:]), m.group("rest"))
+    pushed = read_sentence(rest, None, tower)
+    return pushed if pushed is not None and "V1" in (pushed.striker, pushed.victim) else crash
+
+
 def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash:
     """The first impact's crash: read from its sentence (index `impact`), else from a later sentence that
     restates it, else from an earlier one that says "head-on"."""
@@ -202,10 +277,11 @@ def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash
 def read_crash_at(sents: list[str], impact: int, carry: str | None = None) -> tuple[Crash, int]:
     """`read_crash`, and the index of the sentence it was read from (-1: none)."""
     order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
+    tower = towing(sents)
     for i in order:
-        crash = read_sentence(sents[i], carry if i == impact else None)
+        crash = read_sentence(sents[i], carry if i == impact else None, tower)
         if crash is not None:
-            return crash, i
+            return _pushed_into_v1(sents[i], crash, tower), i
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:
         return Crash(CrashType.FRONTAL), said
     return Crash(), -1

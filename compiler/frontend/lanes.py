@@ -64,3 +64,40 @@ def placed_lane(text: str, each_way: int | Unknown) -> int | Unknown:
     if _LEFT.search(text):
         return each_way
     return UNKNOWN
+
+
+# Which way a lane change went. A lane change goes to the side of the lane it enters; when the report names
+# that lane only by whose it is ("into V1's lane", "into the center lane"), it goes away from the side of the
+# lane it left: a vehicle in the lane to the left of another, or in the leftmost lane, can only move right.
+_SIDE = r"(left|right)(?:most|[- ]hand)?"
+_BEFORE = re.compile(r"\b" + _SIDE + r"[- ]$", re.I)  # "a right lane change", "a left-hand lane change"
+_TARGETS = (
+    # "into the left turn lane", "to the expanded leftmost lane", "toward the right"
+    re.compile(
+        r"\b(?:in)?to(?:ward)? (?:the |its |an? )?(?:[\w-]+ ){0,2}?" + _SIDE + r"\b(?:[- ][\w-]+){0,2}? lane\b", re.I
+    ),
+    re.compile(r"\b(?:to|toward) the " + _SIDE + r"\b(?! of\b)", re.I),
+    # "around the left side of V1", "passing V1 on the left": the side it went by on
+    re.compile(r"\baround (?:the )?" + _SIDE + r"\b|\bon (?:the |its )?" + _SIDE + r"(?: side)?\b(?! of\b)", re.I),
+)
+_ORIGIN = re.compile(
+    r"\b(?:in|from|within) (?:the |its )?(?:adjacent )?" + _SIDE + r"\b(?:[- ](?:adjacent|travel|through|\w+bound))*"
+    r" lanes?\b",
+    re.I,
+)
+_OTHER_SIDE = {"left": "right", "right": "left"}
+
+
+def lane_change_side(text: str, start: int, end: int, said_before: str) -> str | None:
+    """ "left" or "right": where the lane change at text[start:end] went (see above). `said_before` is what
+    the report said of the vehicle before it (where its lane was)."""
+    if m := _BEFORE.search(text[max(0, start - 12) : start]):
+        return m.group(1).lower()
+    if m := re.match(r"\s*(?:to (?:the )?)?" + _SIDE + r"\b", text[end : end + 16], re.I):  # "lane change right"
+        return m.group(1).lower()
+    window = text[start : max(end, start + 80)]
+    for pattern in _TARGETS:
+        if m := pattern.search(window):
+            return next(g for g in m.groups() if g).lower()
+    origins = [m.group(1).lower() for m in _ORIGIN.finditer(said_before + " " + window)]
+    return _OTHER_SIDE[origins[-1]] if origins else None

@@ -114,7 +114,16 @@ def _automated(text: str) -> tuple[str, str] | None:
         return None
     if first is not None:
         said = first.group()
+        # "the Waymo AVs lane": a possessive written without its apostrophe
+        text = re.sub(r"\b((?i:the) (?:[A-Z][\w.]* )?AV)s\b(?= (?!(?:were|are|have|had)\b)[a-z])", r"\1's", text)
         text = _AV.sub("V1", text)
+        # the brand alone names it too once it has been said with it: "the Waymo was stopped", "the Waymo's"
+        if (b := re.match(r"(?:(?i:an?|the|our|its) )?([A-Z][\w.-]*) ", said)) and not re.match(_AV_WORDS, b[1], re.I):
+            text = re.sub(
+                r"\b[Tt]he " + re.escape(b[1]) + r"\b(?![\w-])(?! (?:[A-Z]|vehicle|car|truck|shuttle|bus|fleet)\b)",
+                "V1",
+                text,
+            )
         text = re.sub(r"\b(?:an?|the) [A-Z][\w.]* (?:vehicle|car|truck|shuttle)\b(?=\s*\(\"?V1\"?\))", "V1", text)
     if brand is not None and (first is None or brand.start() < first.start() or brand.group(1) in said):
         said = brand.group() if first is None else said
@@ -169,16 +178,20 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     which say what kind of road user it is."""
     if re.search(r"\bV1\b", _LABEL.sub(" ", text)):
         return text, None, {}  # numbered outside any labels: the report's own numbering
+    labelled = _labels(text)
+    if labelled is not None:
+        if re.search(r"\bV1\b", labelled[0]) or (automated := _automated(labelled[0])) is None:
+            return labelled
+        # It labels the others ("a sedan (Vehicle 2)") but not itself: the automated vehicle is V1.
+        note = f"{labelled[1]}; the automated vehicle ('{automated[1]}') is V1"
+        return automated[0], note, {**labelled[2], "V1": automated[1]}
     if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
         # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
-        automated = _automated(text) if not _LABELLED.search(text) else None
+        automated = _automated(text)
         if automated is None:
             return text, None, {}
         note = f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
         return automated[0], note, {"V1": automated[1]}
-    labelled = _labels(text)
-    if labelled is not None:
-        return labelled
     automated = _automated(text)
     if automated is None:
         return text, None, {}
