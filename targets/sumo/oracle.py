@@ -29,7 +29,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from sovarc.compiler.crashes import LINE_TOLERANCE, face_words, first_overlap, fits, needs, touch
+from sovarc.compiler.crashes import LINE_TOLERANCE, backing_at, face_words, first_overlap, fits, needs, touch
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
@@ -206,8 +206,9 @@ def _angle_finding(plan: Plan, contact: Contact | None) -> Finding:
     striker, victim = plan.impact.striker, plan.impact.victim
     s_zone, v_zone = contact.zones
     seen = f"{striker}'s {face_words(s_zone)} meets {victim}'s {face_words(v_zone)} at {contact.angle:.0f} degrees"
-    ok = fits(kind, contact)
-    message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim)}"
+    backing = backing_at(plan, striker, contact.time)  # the striker as planned at the touch SUMO placed
+    ok = fits(kind, contact, backing)
+    message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim, backing)}"
     return Finding("impact_angle", ok, message, _t(contact.time))
 
 
