@@ -52,7 +52,11 @@ FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 # A striker backing into its victim leads with its rear: the crash type reads with front and rear
 # swapped on both bodies (compiler/crashes.py), so its lines meet as those of the other type do: a
 # rear-end (its rear into the victim's front) is two lines met head-on, its rear meeting the front.
-AS_BACKING = {CrashType.REAR_END: CrashType.FRONTAL, CrashType.FRONTAL: CrashType.REAR_END, CrashType.SIDE: CrashType.SIDE}
+AS_BACKING = {
+    CrashType.REAR_END: CrashType.FRONTAL,
+    CrashType.FRONTAL: CrashType.REAR_END,
+    CrashType.SIDE: CrashType.SIDE,
+}
 # A car turning in legs is struck where along its side the striker's path crosses it: as it moves
 # off from its last change of gear its body lies across a lane, its middle often past that path.
 TURNING_SIDE = (0.5, 0.65, 0.8)

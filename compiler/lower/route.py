@@ -149,7 +149,8 @@ class Route:
     def backs_at_end(self) -> bool:
         """Whether it is reversing on the last stretch of its line, where a crash is planned: it
         leads with its rear there (every crash type then reads with the striker's rear as its front)."""
-        return bool(self.manoeuvres) and self.manoeuvres[-1].backing and self.manoeuvres[-1].hi >= self.line.length - 1e-6
+        last = self.manoeuvres[-1] if self.manoeuvres else None
+        return last is not None and last.backing and last.hi >= self.line.length - 1e-6
 
     def stops(self) -> list[Event]:
         """The places it stands, in order along the line: its stop actions and those of its turns."""

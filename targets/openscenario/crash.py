@@ -22,8 +22,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from itertools import combinations
 
-from sovarc.compiler.crashes import CRASH_ANGLES
-from sovarc.compiler.crashes import BACKING_FACES
+from sovarc.compiler.crashes import BACKING_FACES, CRASH_ANGLES
 from sovarc.compiler.crashes import VICTIM_FACES as CRASH_FACES
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.geometry.bodies import Box, overlap

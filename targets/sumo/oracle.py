@@ -16,7 +16,7 @@ Checks, in order:
   sidewalks are always allowed to pedestrians, and to a car driving into or off the road by a
   driveway (it crosses the sidewalk).
 - `on_road`: made only when a participant reverses: until the impact its body, as SUMO placed
-  it, stays on the road's lanes (kerb.py).
+  it, stays on the road's lanes (on_road.py).
 
 SUMO's collision detection sees vehicles that overlap along one lane (including a wrong-way
 driver on the lane: head-on), and, with `--collision.check-junctions`, vehicle shapes that
@@ -36,7 +36,7 @@ from sovarc.compiler.crashes import LINE_TOLERANCE, backing_at, face_words, firs
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
-from sovarc.targets.sumo.kerb import on_road_finding
+from sovarc.targets.sumo.on_road import on_road_finding
 from sovarc.targets.sumo.network import Network
 from sovarc.targets.sumo.replay import Pose, Trace
 from sovarc.targets.verdict import Finding, Verdict
@@ -67,7 +67,7 @@ def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
         _angle_finding(plan, contact),
         _lanes_finding(plan, trace, network, until),
     ]
-    on_road = on_road_finding(plan, trace, network, until)  # a reversing body, as SUMO placed it (kerb.py)
+    on_road = on_road_finding(plan, trace, network, until)  # a reversing body, as SUMO placed it (on_road.py)
     if on_road is not None:
         findings.append(on_road)
     facts = {

@@ -49,7 +49,5 @@ def on_road_finding(plan: Plan, trace: Trace, network: Network, until: float) ->
 
 def _on_road(network: Network, x: float, y: float) -> bool:
     return any(
-        network.reaches(lane, x, y, lane.width / 2.0)
-        for lane in network.near(x, y, SEARCH)
-        if not lane.pedestrian_only
+        network.reaches(lane, x, y, lane.width / 2.0) for lane in network.near(x, y, SEARCH) if not lane.pedestrian_only
     )
