@@ -40,14 +40,15 @@ def on_road_finding(plan: Plan, trace: Trace, network: Network, until: float) ->
                 continue
             body = Box.of(t.body, pose.x, pose.y, pose.angle)
             for x, y in body.corners(shrink=LINE_TOLERANCE):
-                if not _on_road(network, x, y):
+                if not on_road(network, x, y):
                     message = f"{name}'s body leaves the road at ({x:.1f}, {y:.1f}), as SUMO placed it"
                     return Finding("on_road", False, message, time)
     names = " and ".join(who)
     return Finding("on_road", True, f"{names}, reversing, keeps its body on the road until the impact")
 
 
-def _on_road(network: Network, x: float, y: float) -> bool:
+def on_road(network: Network, x: float, y: float) -> bool:
+    """Whether the point lies on a lane vehicles drive (within half its width of its centre line)."""
     return any(
         network.reaches(lane, x, y, lane.width / 2.0) for lane in network.near(x, y, SEARCH) if not lane.pedestrian_only
     )

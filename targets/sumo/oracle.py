@@ -36,8 +36,8 @@ from sovarc.compiler.crashes import LINE_TOLERANCE, backing_at, face_words, firs
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
-from sovarc.targets.sumo.on_road import on_road_finding
 from sovarc.targets.sumo.network import Network
+from sovarc.targets.sumo.on_road import on_road_finding
 from sovarc.targets.sumo.replay import Pose, Trace
 from sovarc.targets.verdict import Finding, Verdict
 
