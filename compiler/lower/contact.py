@@ -50,8 +50,9 @@ FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 ALONG = CRASH_ANGLES["rear_end"][1] - 15.0
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 # A striker backing into its victim leads with its rear: the crash type reads with front and rear
-# swapped on both bodies (compiler/crashes.py), so its lines meet as those of the other type do: a
-# rear-end (its rear into the victim's front) is two lines met head-on, its rear meeting the front.
+# swapped on both bodies (compiler/crashes.py), so the victim's face is the other type's, and a rear
+# end (its rear into the victim's front) is two lines met head-on. A victim that backs names its faces
+# as ever, but runs against them: its lines too meet as the other type's do (`meeting`).
 AS_BACKING = {
     CrashType.REAR_END: CrashType.FRONTAL,
     CrashType.FRONTAL: CrashType.REAR_END,
@@ -84,9 +85,8 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
     meets the victim with its rear, the line `body.length` behind its front bumper along the way it
     faces. `whole`: on the whole lines (to tell why there is no contact)."""
     backing = striker.backs_at_end
-    if backing:
-        crash = AS_BACKING[crash]
-    k = FACE[crash] * victim.body.length
+    named, crash = meeting(crash, striker, victim)
+    k = FACE[named] * victim.body.length
     side = crash is CrashType.SIDE
     if whole or not (striker.manoeuvres or victim.manoeuvres):
         found = _meetings(_View.of_line(striker), _View.of_line(victim), k, side)
@@ -94,7 +94,7 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
         lead = striker.body.length if backing else 0.0
         mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_line(striker)
         found = []
-        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[crash],):
+        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[named],):
             if victim.manoeuvres:  # the face itself: k is in the view
                 theirs, back = _View.after_turns(victim, face * victim.body.length), 0.0
             else:
@@ -107,6 +107,15 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
         CrashType.SIDE: lambda c: (-min(c.angle, 90.0) // 15, c.lo),
     }[crash]
     return sorted(found, key=preference)
+
+
+def meeting(crash: CrashType, striker: Route, victim: Route) -> tuple[CrashType, CrashType]:
+    """The crash type whose victim face the striker's leading face meets, and the type whose lines'
+    meeting it is: a backing striker swaps the first (its rear leads), each backing body the second
+    (it runs against the way it faces)."""
+    named = AS_BACKING[crash] if striker.backs_at_end else crash
+    lines = AS_BACKING[named] if victim.backs_at_end else named
+    return named, lines
 
 
 def _accepts(crash: CrashType, c: Contact) -> bool:

@@ -105,7 +105,8 @@ class Route:
             caps = np.sqrt(LATERAL_ACCEL * np.minimum(self._radii(), 1e6))
             backing = model(self.body).limits.reverse_speed
             for m in self.manoeuvres:
-                legs = (self.line.s > m.lo + 1e-6) & (self.line.s <= m.hi)
+                # backing: from where it starts, a line of few vertices (a straight lane) capped throughout
+                legs = (self.line.s > m.lo + (-1e-6 if m.backing else 1e-6)) & (self.line.s <= m.hi)
                 caps[legs] = np.minimum(caps[legs], backing if m.backing else MANOEUVRE_SPEED)
             self.caps = np.vstack([self.line.s, caps])
         return self.caps[0], self.caps[1]

@@ -35,7 +35,7 @@ from typing import Any
 
 import z3
 from sovarc.compiler.geometry.angles import angle_diff
-from sovarc.compiler.lower.contact import Contact
+from sovarc.compiler.lower.contact import Contact, meeting
 from sovarc.compiler.lower.route import LEAD, Route
 from sovarc.compiler.vehicles import PLANNED, model
 from sovarc.dsl.ir import ActionKind, CrashType, Role
@@ -390,10 +390,10 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
 
 
 def _catches_up(problem: Problem) -> bool:
-    """Whether the striker comes up behind a victim going its way: its front into the victim's rear, or
-    backing, its rear into the victim's rear (a frontal crash read for a backing striker, crashes.py)."""
-    backing = problem.routes[problem.striker].backs_at_end
-    return problem.crash is (CrashType.FRONTAL if backing else CrashType.REAR_END)
+    """Whether the striker comes up behind a victim going its way, its leading face into the victim's
+    trailing one (the lines of a rear-end; a backing body runs against its faces, contact.meeting)."""
+    _, lines = meeting(problem.crash, problem.routes[problem.striker], problem.routes[problem.victim])
+    return lines is CrashType.REAR_END
 
 
 def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool) -> None:
