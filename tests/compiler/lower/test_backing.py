@@ -188,3 +188,74 @@ def test_crash_types_read_for_a_backing_striker() -> None:
     assert fits(CrashType.FRONTAL, contact(("rear",), ("rear",), 180.0), backing=True)
     assert fits(CrashType.SIDE, contact(("rear", "left"), ("right",), 80.0), backing=True)
     assert not fits(CrashType.SIDE, contact(("front",), ("right",), 80.0), backing=True)
+
+
+def _first_plan(text: str) -> Plan:
+    road_map = load_map(TOWN)
+    staged, notes, matches = sites_for(parse(text), road_map, roads=1)
+    return stage_on_site(staged, notes, road_map, matches[0])
+
+
+PAIR = """scenario s {{
+  environment {{
+    weather clear
+    lighting daylight
+  }}
+  road {{
+    kind straight
+    lanes 2
+    speed_limit 25 mph
+  }}
+  vehicle V1 {{
+    heading north
+    lane 1
+    speed 3 mph
+    actions {{
+      parked
+      {leaves}
+    }}
+  }}
+  vehicle V2 {{
+    heading north
+    lane 1
+    speed 20 mph
+    actions {{
+      follow_lane
+    }}
+  }}
+  crash {{
+    type rear_end
+    striker V2
+    victim V1
+  }}
+}}
+"""
+
+
+def test_a_car_backing_out_is_struck_in_its_rear() -> None:
+    """The victim backs: its faces are named as ever (the passing car's front into its rear), its line
+    runs against them."""
+    plan = _first_plan(PAIR.format(leaves="reverse"))
+    contact = planned_touch(plan)
+    assert contact is not None and backing_at(plan, "V1", contact.time) and not backing_at(plan, "V2", contact.time)
+    assert "front" in contact.zones[0] and "rear" in contact.zones[1] and fits(CrashType.REAR_END, contact)
+
+
+def test_a_parked_car_pulls_out_forwards() -> None:
+    plan = _first_plan(PAIR.format(leaves="drive_into"))
+    samples = plan.trajectory("V1").samples
+    assert samples[0].speed == 0.0 and min(s.speed for s in samples) >= 0.0 and max(s.speed for s in samples) > 1.0
+    contact = planned_touch(plan)
+    assert contact is not None and fits(CrashType.REAR_END, contact)
+
+
+def test_a_backing_car_strikes_a_crossing_pedestrian_with_its_rear() -> None:
+    text = SCENARIO.format(kind="straight", actions="reverse")
+    text = text.replace("vehicle V2", "pedestrian P1").replace(
+        "heading north\n    lane 1\n    speed 0 mph", "heading east\n    lane unknown\n    speed unknown"
+    )
+    text = text.replace("stop", "cross").replace("type rear_end", "type side").replace("victim V2", "victim P1")
+    plan = _first_plan(text)
+    contact = planned_touch(plan)
+    assert contact is not None and "rear" in contact.zones[0]
+    assert fits(CrashType.SIDE, contact, backing=True)
