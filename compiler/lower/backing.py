@@ -96,7 +96,7 @@ def backing_route(p: Participant, match: SiteMatch, body: Body, lanes_touched: o
             notes.append(f"{p.id} backs along lane {lane}")
         offset = 0.0
         index = kinds.index(ActionKind.REVERSE)
-        manoeuvres = (_backing(index, line),)
+        manoeuvres = (_backing(index, line, (back.heading(start) + 180.0) % 360.0),)
         events.append(Event(index, ActionKind.REVERSE, 0.0, BACK_OUT if parked else 0.0))
     touched = lanes_touched(line, match)  # type: ignore[operator]
     return Route(
@@ -114,8 +114,10 @@ def backing_route(p: Participant, match: SiteMatch, body: Body, lanes_touched: o
     )
 
 
-def _backing(index: int, line: Polyline) -> Manoeuvre:
-    """The whole line driven in reverse: the body faces against the way the line runs."""
+def _backing(index: int, line: Polyline, parked: float) -> Manoeuvre:
+    """The whole line driven in reverse: the body faces against the way the line runs, and where it
+    stands, the way it was parked (along the road; it turns as it moves off)."""
     facing = (line.headings(line.s) + 180.0) % 360.0
+    facing[0] = parked
     unwrapped = np.degrees(np.unwrap(np.radians(facing)))
     return Manoeuvre(index, line.s.copy(), unwrapped, (0.0,), (-1,), backing=True)
