@@ -162,7 +162,7 @@ class _View:
         rad = np.radians(headings)
         points = route.line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
         # the lines are compared by the way they run: a backing body runs against the way it faces
-        travel = (headings + 180.0 * np.array([route.gear(float(x)) < 0 for x in s])) % 360.0
+        travel = (headings + 180.0 * np.array([route.backing(float(x)) for x in s])) % 360.0
         return cls(points, s - last, travel, route.body, last)
 
 

@@ -146,6 +146,11 @@ class Route:
         """+1 driving forward at arc length `at`, -1 reversing."""
         return next((m.gear(at) for m in self.manoeuvres if m.lo <= at <= m.hi), 1)
 
+    def backing(self, at: float) -> bool:
+        """Whether it backs along the road at arc length `at` (`reverse`; not a leg of a turn in legs),
+        from where it stands to back on."""
+        return any(m.backing and m.lo <= at <= m.hi for m in self.manoeuvres)
+
     @property
     def backs_at_end(self) -> bool:
         """Whether it is reversing on the last stretch of its line, where a crash is planned: it

@@ -301,8 +301,10 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
 
 
 def _ramps(route: Route, lo: float) -> tuple[float, float]:
-    """The ramps of the leg from arc length `lo`: a reverse leg's are the vehicle's reversing ones."""
-    if route.gear(lo + 0.01) < 0:
+    """The ramps of the leg from arc length `lo`: a car backing along the road eases in and out at its
+    reversing rate. The legs of a turn in legs keep the usual ramps: some are a metre long, too short to
+    reach the least moving speed at that rate."""
+    if route.backing(lo):
         backing = model(route.body).limits.reverse_accel
         return backing, backing
     return A_UP, B_DOWN

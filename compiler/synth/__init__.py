@@ -140,9 +140,10 @@ def _check_drivable(pid: str, path: RoutePath, s: np.ndarray, v: np.ndarray, low
 
 
 def _check_backing(pid: str, route: Route, times: np.ndarray, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
-    """A reverse leg within the vehicle's reversing limits: its speed and its ramps (a car backs at a
-    walking pace or two and eases in and out of it), up to the crash."""
-    backing = np.array([route.gear(float(x)) < 0 for x in s])
+    """Backing along the road within the vehicle's reversing limits: its speed and its ramps (a car backs
+    at a walking pace or two and eases in and out of it), up to the crash. The legs of a turn in legs
+    are held to walking pace by lowering (route.MANOEUVRE_SPEED) and keep the usual ramps."""
+    backing = np.array([route.backing(float(x)) for x in s])
     upto = lowered.solution.impact.get(pid)
     if upto is not None:
         backing &= s <= upto + 1e-6
