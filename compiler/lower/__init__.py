@@ -411,7 +411,7 @@ def _no_contact(
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
-    turning = " and ".join(r.participant.id for r in (striker, victim) if r.manoeuvres)
+    turning = " and ".join(r.participant.id for r in (striker, victim) if any(not m.backing for m in r.manoeuvres))
     if turning and contacts(striker, victim, crash, whole=True):
         how = (
             f"they meet only while {turning} still turns in legs (a three-point turn), before its last change "
