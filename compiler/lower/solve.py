@@ -84,6 +84,7 @@ class Leg:
     begin: Any  # z3 expression: time the leg starts (s)
     up: float = A_UP  # m/s^2 of its ramp from rest
     down: float = B_DOWN  # m/s^2 of its ramp to rest
+    backing: bool = False  # driven backing along the road (its ramps are the reversing ones)
 
 
 @dataclass
@@ -109,8 +110,9 @@ class LegValues:
     begin: float
     duration: float | None
     dwell: float  # after it, when it ends at rest
-    up: float = A_UP  # m/s^2 of its ramps (a reverse leg's are the vehicle's reversing ones)
+    up: float = A_UP  # m/s^2 of its ramps (a backing leg's are the vehicle's reversing ones)
     down: float = B_DOWN
+    backing: bool = False
 
 
 @dataclass(frozen=True)
@@ -282,8 +284,9 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
         if nice:
             pref = min(problem.preferred[pid], high)
             need(vfact.label, z3.And(v >= max(low, 0.75 * pref), v <= max(low, pref)))
-        up, down = _ramps(route, 0.0 if j == 0 else stops[j - 1].lo)
-        leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin, up, down)
+        lo = 0.0 if j == 0 else stops[j - 1].lo
+        up, down = _ramps(route, lo)
+        leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin, up, down, route.backing(lo))
         if end is not None:
             ramps = (v * v / (2 * up) if from_rest else 0) + v * v / (2 * down)
             need(f"{pid}.chain", end - leg_start == v * t - ramps)
@@ -406,7 +409,7 @@ def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool)
     # junction may not; then a few metres do).
     lead = (LEAD if nice else MIN_LEAD) if motion.route.participant.role is Role.VEHICLE else 2.0
     need(f"{pid}.route", s - leg.start >= ramp + (0.0 if leg.from_rest else lead))
-    if nice and leg.up != A_UP:  # a backing car is seen backing for a while (not met at the end of its ramp)
+    if nice and leg.backing:  # a backing car is seen backing for a while (not met at the end of its ramp)
         need(f"{pid}.route", s - leg.start >= ramp + BACKING_FOR * leg.v)
     if nice and not leg.from_rest:
         need(f"{pid}.route", s - leg.start >= 3.0 * leg.v)
@@ -449,6 +452,7 @@ def _values(model: Any, motions: dict[str, Motion], t_hit: Any, problem: Problem
                     dwell=val(m.dwells[j]) if j < len(m.dwells) else 0.0,
                     up=leg.up,
                     down=leg.down,
+                    backing=leg.backing,
                 )
             )
         legs[pid] = tuple(values)

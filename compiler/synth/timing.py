@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
-from sovarc.compiler.lower.solve import A_UP, LegValues
+from sovarc.compiler.lower.solve import LegValues
 from sovarc.compiler.vehicles import PLANNED
 
 MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
@@ -42,7 +42,7 @@ def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_t
     for leg in legs:
         t, s, v = leg.begin, leg.start, leg.v
         # Ruckig keeps a little above the ramps' own rate on a reverse leg (its jerk limit needs it)
-        a = min(MAX_ACCEL, RAMP_SLACK * max(leg.up, leg.down)) if leg.up < A_UP else MAX_ACCEL
+        a = min(MAX_ACCEL, RAMP_SLACK * max(leg.up, leg.down)) if leg.backing else MAX_ACCEL
         if leg.from_rest:
             t, s = t + v / leg.up, s + v * v / (2 * leg.up)
             out.append(Knot(t, s, v, a))
