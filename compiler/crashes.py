@@ -34,6 +34,17 @@ VICTIM_FACES: dict[CrashType, tuple[str, ...]] = {
     CrashType.FRONTAL: ("front",),
     CrashType.SIDE: ("left", "right"),
 }
+# A striker backing into its victim leads with its rear. A crash type then reads with front and rear
+# swapped on both bodies: rear_end is its rear into the victim's front (a car backing into the one
+# stopped behind it: same headings), frontal its rear into the victim's rear (back to back, headings
+# apart), side its rear into the victim's side. The angles stay the type's.
+BACKING_FACES: dict[CrashType, tuple[str, ...]] = {
+    CrashType.REAR_END: ("front",),
+    CrashType.FRONTAL: ("rear",),
+    CrashType.SIDE: ("left", "right"),
+}
+# m/s: a striker moving backwards faster than this at the first touch leads with its rear
+BACKING_SPEED = 0.05
 # m a body may reach over a lane line before it counts as crossing it: the SUMO oracle's bound,
 # which lowering (compiler/lower/swing.py, kturn.py) plans inside.
 LINE_TOLERANCE = 0.25
@@ -71,11 +82,20 @@ def planned_touch(plan: Plan) -> Contact | None:
     return touch(times, a, b)
 
 
-def fits(kind: CrashType, contact: Contact) -> bool:
-    """Whether the striker's front meets the face of the victim the crash type names, at an angle
-    between the headings the type allows (a side crash: any angle)."""
+def backing_at(plan: Plan, participant: str, time: float) -> bool:
+    """Whether the participant is moving backwards at `time` in the plan (the last planned move up
+    to then, so that a body that has just stopped against its victim still counts as backing)."""
+    samples = plan.trajectory(participant).samples
+    moving = [s.speed for s in samples if s.t <= time + 1e-9 and abs(s.speed) > BACKING_SPEED]
+    return bool(moving) and moving[-1] < 0.0
+
+
+def fits(kind: CrashType, contact: Contact, backing: bool = False) -> bool:
+    """Whether the striker's leading face (its front; its rear when `backing`) meets the face of the
+    victim the crash type names, at an angle between the headings the type allows (side: any)."""
     s_zone, v_zone = contact.zones
-    ok = "front" in s_zone and any(face in v_zone for face in VICTIM_FACES[kind])
+    lead, faces = ("rear", BACKING_FACES[kind]) if backing else ("front", VICTIM_FACES[kind])
+    ok = lead in s_zone and any(face in v_zone for face in faces)
     if kind is CrashType.REAR_END:
         return ok and contact.angle <= REAR_END_MAX_ANGLE
     if kind is CrashType.FRONTAL:
@@ -90,10 +110,11 @@ def face_words(zone: tuple[str, ...]) -> str:
     return f"{zone[0]} side" if zone[0] in {"left", "right"} else zone[0]
 
 
-def needs(kind: CrashType, striker: str, victim: str) -> str:
+def needs(kind: CrashType, striker: str, victim: str, backing: bool = False) -> str:
     """What the crash type needs at the first touch, in words."""
-    wanted = " or ".join(face_words((face,)) for face in VICTIM_FACES[kind])
-    text = f"{kind.value} needs {striker}'s front into {victim}'s {wanted}"
+    wanted = " or ".join(face_words((face,)) for face in (BACKING_FACES if backing else VICTIM_FACES)[kind])
+    lead = "rear (backing)" if backing else "front"
+    text = f"{kind.value} needs {striker}'s {lead} into {victim}'s {wanted}"
     if kind is CrashType.REAR_END:
         return text + f", headings within {REAR_END_MAX_ANGLE:.0f} degrees"
     if kind is CrashType.FRONTAL:

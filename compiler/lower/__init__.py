@@ -31,6 +31,7 @@ from sovarc.dsl.printer import format_speed
 DEFAULT_LIMIT_KMH = {RoadKind.STRAIGHT: 70.0, RoadKind.INTERSECTION: 50.0, RoadKind.T_JUNCTION: 50.0}
 USUAL_SHARE = 0.8  # of the limit: the speed a vehicle with no reported speed prefers
 MAX_CONTACTS = 4  # contacts tried, best first
+_STANDING = frozenset({ActionKind.STOP, ActionKind.PARKED})  # a participant of only these stands throughout
 
 
 @dataclass(frozen=True)
@@ -291,7 +292,7 @@ def _stationary(scenario: Scenario, striker: str) -> set[str]:
         for p in scenario.participants
         if p.id != striker
         and p.known_actions
-        and (all(a.kind is ActionKind.STOP for a in p.known_actions) or _reported(p) == 0.0)
+        and (all(a.kind in _STANDING for a in p.known_actions) or _reported(p) == 0.0)
     }
 
 
@@ -410,7 +411,7 @@ def _no_contact(
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
-    turning = " and ".join(r.participant.id for r in (striker, victim) if r.manoeuvres)
+    turning = " and ".join(r.participant.id for r in (striker, victim) if any(not m.backing for m in r.manoeuvres))
     if turning and contacts(striker, victim, crash, whole=True):
         how = (
             f"they meet only while {turning} still turns in legs (a three-point turn), before its last change "

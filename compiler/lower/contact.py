@@ -49,6 +49,15 @@ FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 # they shared: 15 degrees inside every oracle's bound for a rear-end.
 ALONG = CRASH_ANGLES["rear_end"][1] - 15.0
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
+# A striker backing into its victim leads with its rear: the crash type reads with front and rear
+# swapped on both bodies (compiler/crashes.py), so the victim's face is the other type's, and a rear
+# end (its rear into the victim's front) is two lines met head-on. A victim that backs names its faces
+# as ever, but runs against them: its lines too meet as the other type's do (`meeting`).
+AS_BACKING = {
+    CrashType.REAR_END: CrashType.FRONTAL,
+    CrashType.FRONTAL: CrashType.REAR_END,
+    CrashType.SIDE: CrashType.SIDE,
+}
 # A car turning in legs is struck where along its side the striker's path crosses it: as it moves
 # off from its last change of gear its body lies across a lane, its middle often past that path.
 TURNING_SIDE = (0.5, 0.65, 0.8)
@@ -72,16 +81,20 @@ class Contact:
 def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = False) -> list[Contact]:
     """Every contact the crash type accepts, best first. A participant that turns in legs (a
     three-point turn) meets the other only after its last change of gear: the crash is on a
-    forward leg and the solver puts it on the last one. `whole`: on the whole lines (to tell why
-    there is no contact)."""
-    k = FACE[crash] * victim.body.length
+    forward leg and the solver puts it on the last one. A striker backing at the end of its route
+    meets the victim with its rear, the line `body.length` behind its front bumper along the way it
+    faces. `whole`: on the whole lines (to tell why there is no contact)."""
+    backing = striker.backs_at_end
+    named, crash = meeting(crash, striker, victim)
+    k = FACE[named] * victim.body.length
     side = crash is CrashType.SIDE
     if whole or not (striker.manoeuvres or victim.manoeuvres):
         found = _meetings(_View.of_line(striker), _View.of_line(victim), k, side)
     else:
-        mine = _View.after_turns(striker, 0.0) if striker.manoeuvres else _View.of_line(striker)
+        lead = striker.body.length if backing else 0.0
+        mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_line(striker)
         found = []
-        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[crash],):
+        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[named],):
             if victim.manoeuvres:  # the face itself: k is in the view
                 theirs, back = _View.after_turns(victim, face * victim.body.length), 0.0
             else:
@@ -94,6 +107,15 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
         CrashType.SIDE: lambda c: (-min(c.angle, 90.0) // 15, c.lo),
     }[crash]
     return sorted(found, key=preference)
+
+
+def meeting(crash: CrashType, striker: Route, victim: Route) -> tuple[CrashType, CrashType]:
+    """The crash type whose victim face the striker's leading face meets, and the type whose lines'
+    meeting it is: a backing striker swaps the first (its rear leads), each backing body the second
+    (it runs against the way it faces)."""
+    named = AS_BACKING[crash] if striker.backs_at_end else crash
+    lines = AS_BACKING[named] if victim.backs_at_end else named
+    return named, lines
 
 
 def _accepts(crash: CrashType, c: Contact) -> bool:
@@ -121,8 +143,11 @@ class _View:
 
     @classmethod
     def of_line(cls, route: Route) -> _View:
-        """The front bumper's line: the body trails along it."""
-        points, s = _samples(route.line.points, route.line.s)
+        """The front bumper's line: the body trails along it. A car parked at the kerb is seen on its
+        lane's line, which the kerb line runs beside at the same arc lengths: a car in the lane meets it
+        there, its body overlapping the parked one by most of a width."""
+        line = route.line.offset(-route.kerb) if route.kerb else route.line
+        points, s = _samples(line.points, line.s)
         return cls(points, s, _headings(points), route.body)
 
     @classmethod
@@ -136,7 +161,9 @@ class _View:
         headings = route.facing(s)
         rad = np.radians(headings)
         points = route.line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
-        return cls(points, s - last, headings, route.body, last)
+        # the lines are compared by the way they run: a backing body runs against the way it faces
+        travel = (headings + 180.0 * np.array([route.backing(float(x)) for x in s])) % 360.0
+        return cls(points, s - last, travel, route.body, last)
 
 
 def _on_routes(c: Contact, striker: _View, victim: _View) -> Contact:

@@ -18,6 +18,7 @@ from sovarc.dsl.ir import ActionKind, CrashType, Participant
 
 KERB = 12.0  # m from the vehicle's line to where a crossing starts and ends
 BESIDE = 0.3  # m right of the vehicle's line where a walking pedestrian is
+BACKED = 10.0  # m a backing car has backed when it meets a pedestrian
 WALK_BEFORE, WALK_AFTER = 40.0, 15.0  # m of walking before and after the meeting point
 
 
@@ -27,6 +28,8 @@ def pedestrian_route(
     line = partner.line
     anchor = junction_exit + 5.0 if junction_exit is not None else 0.6 * line.length
     anchor = min(max(anchor, partner.start_hi + 30.0), line.length - 10.0)
+    if partner.backs_at_end:  # a car backs slowly, a few metres: met where its rear is after BACKED metres
+        anchor = min(partner.body.length + BACKED, line.length - 1.0)
     heading = line.heading(anchor)
     q = line.point(anchor)
     kinds = {a.kind for a in p.known_actions}

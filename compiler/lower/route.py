@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from sovarc.compiler.geometry.polyline import Polyline
-from sovarc.compiler.vehicles import PLANNED, Body
+from sovarc.compiler.vehicles import PLANNED, Body, model
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
 LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a turn may ask (the vehicle model's; it caps curve speeds)
@@ -49,6 +49,7 @@ class Manoeuvre:
     heading: np.ndarray  # compass heading the body faces at each, unwrapped
     stops: tuple[float, ...]  # where it stands: where the turn begins, then every change of gear
     gears: tuple[int, ...]  # the leg after each stop: +1 forward, -1 reverse
+    backing: bool = False  # a car backing along the road (`reverse`), not a turn in legs: capped at its reversing speed
 
     @property
     def lo(self) -> float:
@@ -61,7 +62,8 @@ class Manoeuvre:
     def carried(self, carry: Callable[[float], float]) -> Manoeuvre:
         """The same stretch with its arc lengths carried onto another line (a smoothed one)."""
         s = np.array([carry(float(x)) for x in self.s])
-        return Manoeuvre(self.index, s, self.heading, tuple(carry(x) for x in self.stops), self.gears)
+        stops = tuple(carry(x) for x in self.stops)
+        return Manoeuvre(self.index, s, self.heading, stops, self.gears, self.backing)
 
     def facing(self, at: np.ndarray) -> np.ndarray:
         return np.interp(at, self.s, self.heading) % 360.0
@@ -84,7 +86,8 @@ class Route:
     starts_at_rest: bool = False  # its first action is a stop (or it waits in a driveway)
     notes: list[str] = field(default_factory=list)
     caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line
-    manoeuvres: tuple[Manoeuvre, ...] = ()  # its three-point turns, in order
+    manoeuvres: tuple[Manoeuvre, ...] = ()  # its three-point turns and its backing, in order
+    kerb: float = 0.0  # m its line lies right of its lane's centre line: a car parked at the kerb (`parked`)
 
     def cap_between(self, a: float, b: float) -> float:
         """The lowest curvature speed cap over [a, b] and CAP_REACH beyond, but not beyond a stop
@@ -100,9 +103,11 @@ class Route:
         """(arc lengths, speed cap at each) along the line (a vehicle's is already smoothed)."""
         if self.caps is None:
             caps = np.sqrt(LATERAL_ACCEL * np.minimum(self._radii(), 1e6))
+            backing = model(self.body).limits.reverse_speed
             for m in self.manoeuvres:
-                legs = (self.line.s > m.lo + 1e-6) & (self.line.s <= m.hi)
-                caps[legs] = np.minimum(caps[legs], MANOEUVRE_SPEED)
+                # backing: from where it starts, a line of few vertices (a straight lane) capped throughout
+                legs = (self.line.s > m.lo + (-1e-6 if m.backing else 1e-6)) & (self.line.s <= m.hi)
+                caps[legs] = np.minimum(caps[legs], backing if m.backing else MANOEUVRE_SPEED)
             self.caps = np.vstack([self.line.s, caps])
         return self.caps[0], self.caps[1]
 
@@ -140,6 +145,18 @@ class Route:
     def gear(self, at: float) -> int:
         """+1 driving forward at arc length `at`, -1 reversing."""
         return next((m.gear(at) for m in self.manoeuvres if m.lo <= at <= m.hi), 1)
+
+    def backing(self, at: float) -> bool:
+        """Whether it backs along the road at arc length `at` (`reverse`; not a leg of a turn in legs),
+        from where it stands to back on."""
+        return any(m.backing and m.lo <= at <= m.hi for m in self.manoeuvres)
+
+    @property
+    def backs_at_end(self) -> bool:
+        """Whether it is reversing on the last stretch of its line, where a crash is planned: it
+        leads with its rear there (every crash type then reads with the striker's rear as its front)."""
+        last = self.manoeuvres[-1] if self.manoeuvres else None
+        return last is not None and last.backing and last.hi >= self.line.length - 1e-6
 
     def stops(self) -> list[Event]:
         """The places it stands, in order along the line: its stop actions and those of its turns."""

@@ -17,6 +17,7 @@ import numpy as np
 from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower import kturn
+from sovarc.compiler.lower.backing import backing_route, is_backing
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
 from sovarc.compiler.lower.swing import Approach, keep_in_lane
@@ -45,6 +46,8 @@ def vehicle_route(
     """`side`: where a driveway move without a stated side goes; `wrong_way_lane`: which lane of the
     other direction a retrograde move drives in (the crash partner's); `prefer`: the junction move
     (and why) to plan when the actions name none. All three are chosen by the caller."""
+    if is_backing(p):  # parked, or backing along the road (backing.py)
+        return backing_route(p, match, CAR, lanes_touched)
     placement = match.placement(p.id)
     if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
         raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))

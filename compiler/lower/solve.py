@@ -35,9 +35,9 @@ from typing import Any
 
 import z3
 from sovarc.compiler.geometry.angles import angle_diff
-from sovarc.compiler.lower.contact import Contact
+from sovarc.compiler.lower.contact import Contact, meeting
 from sovarc.compiler.lower.route import LEAD, Route
-from sovarc.compiler.vehicles import PLANNED
+from sovarc.compiler.vehicles import PLANNED, model
 from sovarc.dsl.ir import ActionKind, CrashType, Role
 
 A_UP = PLANNED.start_accel  # m/s^2, starting from rest (the vehicle model's)
@@ -60,6 +60,7 @@ RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 
 # under load up to a factor of about 2.5.
 TRACKED_MS = 1000
 PLAIN_MS = 3000
+BACKING_FOR = 2.0  # s a backing car is preferred to back at its speed before the crash
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
 
@@ -81,6 +82,9 @@ class Leg:
     v: Any
     t: Any  # duration; for an open leg, up to the impact (or the leg's own start time)
     begin: Any  # z3 expression: time the leg starts (s)
+    up: float = A_UP  # m/s^2 of its ramp from rest
+    down: float = B_DOWN  # m/s^2 of its ramp to rest
+    backing: bool = False  # driven backing along the road (its ramps are the reversing ones)
 
 
 @dataclass
@@ -106,6 +110,9 @@ class LegValues:
     begin: float
     duration: float | None
     dwell: float  # after it, when it ends at rest
+    up: float = A_UP  # m/s^2 of its ramps (a backing leg's are the vehicle's reversing ones)
+    down: float = B_DOWN
+    backing: bool = False
 
 
 @dataclass(frozen=True)
@@ -277,11 +284,13 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
         if nice:
             pref = min(problem.preferred[pid], high)
             need(vfact.label, z3.And(v >= max(low, 0.75 * pref), v <= max(low, pref)))
-        leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin)
+        lo = 0.0 if j == 0 else stops[j - 1].lo
+        up, down = _ramps(route, lo)
+        leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin, up, down, route.backing(lo))
         if end is not None:
-            ramps = (v * v / (2 * A_UP) if from_rest else 0) + v * v / (2 * B_DOWN)
+            ramps = (v * v / (2 * up) if from_rest else 0) + v * v / (2 * down)
             need(f"{pid}.chain", end - leg_start == v * t - ramps)
-            need(f"{pid}.chain", t >= (v / A_UP if from_rest else 0) + v / B_DOWN)
+            need(f"{pid}.chain", t >= (v / up if from_rest else 0) + v / down)
             dwell = z.real(f"{pid}.dwell{j + 1}")
             need(f"{pid}.chain", dwell >= (NICE_DWELL if nice else DWELL))
             motion.dwells.append(dwell)
@@ -292,6 +301,16 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
         motion.stopped_at_impact = True
         motion.impact_s = positions[-1]
     return motion
+
+
+def _ramps(route: Route, lo: float) -> tuple[float, float]:
+    """The ramps of the leg from arc length `lo`: a car backing along the road eases in and out at its
+    reversing rate. The legs of a turn in legs keep the usual ramps: some are a metre long, too short to
+    reach the least moving speed at that rate."""
+    if route.backing(lo):
+        backing = model(route.body).limits.reverse_accel
+        return backing, backing
+    return A_UP, B_DOWN
 
 
 def _leg_cap(route: Route, j: int, stops: list[Any], reach: float | None) -> float:
@@ -365,7 +384,7 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
     else:
         victim.impact_s = s_v
         _arrive(problem.victim, victim, s_v, t_hit, need, nice)
-        if problem.crash is CrashType.REAR_END:
+        if _catches_up(problem):
             need(crash, striker.legs[-1].v >= victim.legs[-1].v + REAR_END_GAIN)
         elif nice and problem.crash is CrashType.SIDE and c.angle < SHALLOW_SIDE:
             # Nearly side by side, the striker's front surely reaches the victim's side first if
@@ -375,18 +394,27 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
             need(crash, striker.legs[-1].v * along >= victim.legs[-1].v)
 
 
+def _catches_up(problem: Problem) -> bool:
+    """Whether the striker comes up behind a victim going its way, its leading face into the victim's
+    trailing one (the lines of a rear-end; a backing body runs against its faces, contact.meeting)."""
+    _, lines = meeting(problem.crash, problem.routes[problem.striker], problem.routes[problem.victim])
+    return lines is CrashType.REAR_END
+
+
 def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool) -> None:
     """The participant is at arc length s at time t_hit, cruising on its last leg."""
     leg = motion.legs[-1]
-    ramp = leg.v * leg.v / (2 * A_UP) if leg.from_rest else 0
+    ramp = leg.v * leg.v / (2 * leg.up) if leg.from_rest else 0
     # Seen moving before the crash: LEAD metres when the site allows (a short arm of a city
     # junction may not; then a few metres do).
     lead = (LEAD if nice else MIN_LEAD) if motion.route.participant.role is Role.VEHICLE else 2.0
     need(f"{pid}.route", s - leg.start >= ramp + (0.0 if leg.from_rest else lead))
+    if nice and leg.backing:  # a backing car is seen backing for a while (not met at the end of its ramp)
+        need(f"{pid}.route", s - leg.start >= ramp + BACKING_FOR * leg.v)
     if nice and not leg.from_rest:
         need(f"{pid}.route", s - leg.start >= 3.0 * leg.v)
     need("impact", s - leg.start == leg.v * (t_hit - leg.begin) - ramp)
-    need("impact", t_hit - leg.begin >= (leg.v / A_UP if leg.from_rest else 0))
+    need("impact", t_hit - leg.begin >= (leg.v / leg.up if leg.from_rest else 0))
     need(f"{pid}.route", s <= motion.route.line.length - 1.0)
 
 
@@ -422,6 +450,9 @@ def _values(model: Any, motions: dict[str, Motion], t_hit: Any, problem: Problem
                     begin=val(leg.begin),
                     duration=None if leg.end is None else val(leg.t),
                     dwell=val(m.dwells[j]) if j < len(m.dwells) else 0.0,
+                    up=leg.up,
+                    down=leg.down,
+                    backing=leg.backing,
                 )
             )
         legs[pid] = tuple(values)

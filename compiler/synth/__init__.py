@@ -24,6 +24,7 @@ from sovarc.compiler.synth.impact import check_impact
 from sovarc.compiler.synth.legs import RoutePath
 from sovarc.compiler.synth.limits import worst_ratio
 from sovarc.compiler.synth.timing import knots, sample
+from sovarc.compiler.vehicles import model
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 from sovarc.dsl.ir import ActionKind, Role
 
@@ -45,7 +46,7 @@ def synthesize(lowered: Lowered, *, step: float = STEP, seed: int = 0) -> Plan:
         trajectories.append(trajectory)
         notes += extra
     striker = next(t for t in trajectories if t.participant == lowered.striker)
-    point = _point_at(striker, impact_time)
+    point = _point_at(striker, impact_time, lowered.routes[lowered.striker].backs_at_end)
     plan = Plan(
         scenario=lowered.scenario,
         network=lowered.road_map.network,
@@ -83,6 +84,7 @@ def _trajectory(
         samples.append(Sample(float(t), x, y, heading, float(vi) * scale * path.gear(float(si))))
     if vehicle:
         _check_drivable(pid, path, s, v, lowered)
+        _check_backing(pid, route, times, s, v, lowered)
     return (
         Trajectory(
             participant=pid,
@@ -137,6 +139,28 @@ def _check_drivable(pid: str, path: RoutePath, s: np.ndarray, v: np.ndarray, low
         )
 
 
+def _check_backing(pid: str, route: Route, times: np.ndarray, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
+    """Backing along the road within the vehicle's reversing limits: its speed and its ramps (a car backs
+    at a walking pace or two and eases in and out of it), up to the crash. The legs of a turn in legs
+    are held to walking pace by lowering (route.MANOEUVRE_SPEED) and keep the usual ramps."""
+    backing = np.array([route.backing(float(x)) for x in s])
+    upto = lowered.solution.impact.get(pid)
+    if upto is not None:
+        backing &= s <= upto + 1e-6
+    if not backing.any():
+        return
+    limits = model(route.body).limits
+    accel = np.abs(np.gradient(v, times))
+    fastest, hardest = float(v[backing].max()), float(accel[backing].max())
+    if fastest <= limits.reverse_speed * ENVELOPE_SLACK and hardest <= limits.reverse_accel * ENVELOPE_SLACK:
+        return
+    message = (
+        f"{pid} backs on {lowered.match.site.id} at up to {fastest:.2f} m/s and {hardest:.2f} m/s^2; "
+        f"it may back at {limits.reverse_speed:.1f} m/s and {limits.reverse_accel:.1f} m/s^2"
+    )
+    raise SynthesisError(Diagnostic(message, lowered.scenario.participant(pid).meta.span))  # type: ignore[union-attr]
+
+
 def _segments(route: Route, profile_times: tuple[np.ndarray, np.ndarray], legs: tuple) -> tuple[Segment, ...]:
     times, s = profile_times
 
@@ -155,6 +179,11 @@ def _segments(route: Route, profile_times: tuple[np.ndarray, np.ndarray], legs: 
     return tuple(out)
 
 
-def _point_at(trajectory: Trajectory, t: float) -> tuple[float, float]:
+def _point_at(trajectory: Trajectory, t: float, backing: bool) -> tuple[float, float]:
+    """The striker's leading point at t: its front bumper, or backing, its rear bumper."""
     sample_ = trajectory.at(t)
-    return (sample_.x, sample_.y)
+    if not backing:
+        return (sample_.x, sample_.y)
+    rad = math.radians(sample_.heading)
+    length = trajectory.body.length
+    return (sample_.x - length * math.sin(rad), sample_.y - length * math.cos(rad))

@@ -11,7 +11,7 @@ oracle would fail is refused, and the next staging is tried.
 
 from __future__ import annotations
 
-from sovarc.compiler.crashes import face_words, fits, needs, planned_touch
+from sovarc.compiler.crashes import backing_at, face_words, fits, needs, planned_touch
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 
@@ -24,11 +24,12 @@ def check_impact(plan: Plan) -> None:
     if contact is None:
         message = f"on {plan.site}, the planned bodies of {striker} and {victim} never touch"
         raise SynthesisError(Diagnostic(message, span))
-    if fits(kind, contact):
+    backing = backing_at(plan, striker, contact.time)
+    if fits(kind, contact, backing):
         return
     s_zone, v_zone = contact.zones
     message = (
         f"on {plan.site}, {striker}'s {face_words(s_zone)} would first touch {victim}'s {face_words(v_zone)} "
-        f"at {contact.angle:.1f} degrees (t={contact.time:.2f} s); {needs(kind, striker, victim)}"
+        f"at {contact.angle:.1f} degrees (t={contact.time:.2f} s); {needs(kind, striker, victim, backing)}"
     )
     raise SynthesisError(Diagnostic(message, span))

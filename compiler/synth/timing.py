@@ -15,11 +15,12 @@ from dataclasses import dataclass
 
 import numpy as np
 from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
-from sovarc.compiler.lower.solve import A_UP, B_DOWN, LegValues
+from sovarc.compiler.lower.solve import LegValues
 from sovarc.compiler.vehicles import PLANNED
 
 MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
 MAX_JERK = 12.0  # m/s^3
+RAMP_SLACK = 1.05  # of a reverse leg's ramp rate, the most Ruckig may use on it
 
 
 @dataclass(frozen=True)
@@ -27,6 +28,7 @@ class Knot:
     t: float
     s: float
     v: float
+    accel: float = MAX_ACCEL  # m/s^2 the piece that reaches it may use (a reverse leg's: its ramps')
 
 
 def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_time: float) -> list[Knot]:
@@ -39,16 +41,18 @@ def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_t
         out.append(Knot(initial_dwell, start, 0.0))
     for leg in legs:
         t, s, v = leg.begin, leg.start, leg.v
+        # Ruckig keeps a little above the ramps' own rate on a reverse leg (its jerk limit needs it)
+        a = min(MAX_ACCEL, RAMP_SLACK * max(leg.up, leg.down)) if leg.backing else MAX_ACCEL
         if leg.from_rest:
-            t, s = t + v / A_UP, s + v * v / (2 * A_UP)
-            out.append(Knot(t, s, v))
+            t, s = t + v / leg.up, s + v * v / (2 * leg.up)
+            out.append(Knot(t, s, v, a))
         if leg.end is None:
-            out.append(Knot(end_time, s + v * (end_time - t), v))
+            out.append(Knot(end_time, s + v * (end_time - t), v, a))
             break
         assert leg.duration is not None
-        brake_at = leg.begin + leg.duration - v / B_DOWN
-        out.append(Knot(brake_at, leg.end - v * v / (2 * B_DOWN), v))
-        out.append(Knot(leg.begin + leg.duration, leg.end, 0.0))
+        brake_at = leg.begin + leg.duration - v / leg.down
+        out.append(Knot(brake_at, leg.end - v * v / (2 * leg.down), v, a))
+        out.append(Knot(leg.begin + leg.duration, leg.end, 0.0, a))
         rest_until = leg.begin + leg.duration + leg.dwell
         if leg is legs[-1]:
             rest_until = end_time
@@ -106,7 +110,7 @@ def _ruckig(otg: Ruckig, a: Knot, b: Knot) -> Trajectory | None:
     inp.target_position, inp.target_velocity, inp.target_acceleration = [b.s], [b.v], [0.0]
     inp.max_velocity = [max(a.v, b.v) * 1.1 + 0.5]
     inp.min_velocity = [0.0]
-    inp.max_acceleration = [MAX_ACCEL]
+    inp.max_acceleration = [b.accel]
     inp.max_jerk = [MAX_JERK]
     inp.minimum_duration = duration
     trajectory = Trajectory(1)

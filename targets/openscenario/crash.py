@@ -11,7 +11,9 @@ a body that clips the other metres before C_A does not. Its time is kept as a fa
 
 Angles and faces follow the SUMO oracle, so that the two targets agree: rear_end = striker front
 into victim rear, headings within 45 degrees; frontal = front into front, headings at least 100
-degrees apart; side = striker front into a side of the victim (the faces decide, not the angle)."""
+degrees apart; side = striker front into a side of the victim (the faces decide, not the angle). A
+striker backing at the touch (it moves against the way it faces, as the file's poses show) leads with
+its rear, and front and rear swap on both bodies: rear_end = its rear into the victim's front."""
 
 from __future__ import annotations
 
@@ -20,7 +22,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from itertools import combinations
 
-from sovarc.compiler.crashes import CRASH_ANGLES
+from sovarc.compiler.crashes import BACKING_FACES, CRASH_ANGLES
 from sovarc.compiler.crashes import VICTIM_FACES as CRASH_FACES
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.geometry.bodies import Box, overlap
@@ -44,6 +46,8 @@ OVERLAP_WINDOW = 1.0  # s after the first touch in which the bodies must overlap
 
 # The victim faces each crash type names (compiler/crashes.py), by the type's name.
 VICTIM_FACES: dict[str, frozenset[str]] = {kind.value: frozenset(faces) for kind, faces in CRASH_FACES.items()}
+BACKED_INTO: dict[str, frozenset[str]] = {kind.value: frozenset(faces) for kind, faces in BACKING_FACES.items()}
+BACKING_LOOK = 0.2  # s before the touch over which the striker's motion is read
 
 
 @dataclass(frozen=True)
@@ -189,9 +193,11 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     facts["striker_face"] = "-".join(s_faces)
     facts["victim_face"] = "-".join(v_faces)
     problems = []
-    if "front" not in s_faces:
-        problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its front")
-    wanted = VICTIM_FACES[crash.type]
+    backing = _backing(scene, crash.striker, touch)
+    lead = "rear" if backing else "front"
+    if lead not in s_faces:
+        problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its {lead}")
+    wanted = (BACKED_INTO if backing else VICTIM_FACES)[crash.type]
     if not wanted.intersection(v_faces):
         problems.append(
             f"the victim {crash.victim} is hit on its {_words(v_faces)}, not its {' or '.join(sorted(wanted))}"
@@ -201,6 +207,13 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     else:
         faces = f"{_words(s_faces)} of {crash.striker} into {_words(v_faces)} of {crash.victim}"
         yield Finding("impact_faces", True, f"{faces}, as a {crash.type} crash", touch)
+
+
+def _backing(scene: Scene, name: str, t: float) -> bool:
+    """Whether the body moves against the way it faces just before t."""
+    before, at = scene.pose(name, max(0.0, t - BACKING_LOOK)), scene.pose(name, t)
+    along = (at.x - before.x) * math.cos(at.h) + (at.y - before.y) * math.sin(at.h)
+    return along < -1e-3
 
 
 def _words(faces: tuple[str, ...]) -> str:

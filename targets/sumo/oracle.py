@@ -9,11 +9,14 @@ Checks, in order:
 - `impact_angle`: at the first touch, the faces and the angle between headings match the
   crash type: rear_end = striker front into victim rear, headings within 45 degrees;
   frontal = front into front, headings at least 100 degrees apart (approaching each other;
-  see `compiler/crashes.CRASH_ANGLES`); side = striker front into a side of the victim.
+  see `compiler/crashes.CRASH_ANGLES`); side = striker front into a side of the victim. A
+  striker backing at the touch (as planned) leads with its rear: front and rear swap on both.
 - `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
   its actions do not allow. Junction interiors have no painted lines and are not checked;
   sidewalks are always allowed to pedestrians, and to a car driving into or off the road by a
   driveway (it crosses the sidewalk).
+- `on_road`: made only when a participant reverses: until the impact its body, as SUMO placed
+  it, stays on the road's lanes (on_road.py).
 
 SUMO's collision detection sees vehicles that overlap along one lane (including a wrong-way
 driver on the lane: head-on), and, with `--collision.check-junctions`, vehicle shapes that
@@ -29,11 +32,12 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from sovarc.compiler.crashes import LINE_TOLERANCE, face_words, first_overlap, fits, needs, touch
+from sovarc.compiler.crashes import LINE_TOLERANCE, backing_at, face_words, first_overlap, fits, needs, touch
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
 from sovarc.targets.sumo.network import Network
+from sovarc.targets.sumo.on_road import on_road_finding
 from sovarc.targets.sumo.replay import Pose, Trace
 from sovarc.targets.verdict import Finding, Verdict
 
@@ -63,6 +67,9 @@ def judge(plan: Plan, trace: Trace, network: Network) -> Verdict:
         _angle_finding(plan, contact),
         _lanes_finding(plan, trace, network, until),
     ]
+    on_road = on_road_finding(plan, trace, network, until)  # a reversing body, as SUMO placed it (on_road.py)
+    if on_road is not None:
+        findings.append(on_road)
     facts = {
         "sumo": trace.sumo,
         "collisions": [
@@ -206,8 +213,9 @@ def _angle_finding(plan: Plan, contact: Contact | None) -> Finding:
     striker, victim = plan.impact.striker, plan.impact.victim
     s_zone, v_zone = contact.zones
     seen = f"{striker}'s {face_words(s_zone)} meets {victim}'s {face_words(v_zone)} at {contact.angle:.0f} degrees"
-    ok = fits(kind, contact)
-    message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim)}"
+    backing = backing_at(plan, striker, contact.time)  # the striker as planned at the touch SUMO placed
+    ok = fits(kind, contact, backing)
+    message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim, backing)}"
     return Finding("impact_angle", ok, message, _t(contact.time))
 
 

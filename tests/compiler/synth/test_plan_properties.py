@@ -2,7 +2,7 @@
 
 Each property is checked per scenario over all of its plans: vehicles stay in the lanes their
 actions allow, speeds stay within the limits lowering promised (negative only on the reverse
-legs of a three-point turn), striker and victim touch at the faces the crash type names and
+legs of a three-point turn and while backing), striker and victim touch at the faces the crash type names and
 arrive together, samples are regular, and the output is deterministic.
 """
 
@@ -13,6 +13,7 @@ from collections.abc import Iterable
 
 import numpy as np
 import pytest
+from sovarc.compiler.crashes import backing_at
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.lower import DEFAULT_LIMIT_KMH, lower
 from sovarc.compiler.lower.route import MANOEUVRE_SPEED
@@ -20,8 +21,9 @@ from sovarc.compiler.lower.solve import V_PED_MAX
 from sovarc.compiler.plan import Plan, Sample, Trajectory, dump_plan
 from sovarc.compiler.synth import synthesize
 from sovarc.compiler.synth.timing import knots, sample
+from sovarc.compiler.vehicles import model
 from sovarc.dsl.errors import SovarcError
-from sovarc.dsl.ir import CrashType, RoadKind, Role, Speed
+from sovarc.dsl.ir import ActionKind, CrashType, RoadKind, Role, Speed
 
 from tests.compiler.lower.staging import NAMES, ROADS, Staged, plans, scenario, seeds_for, staged, town
 
@@ -47,6 +49,11 @@ def _distance_to_polyline(points: np.ndarray, shape: Iterable[tuple[float, ...]]
     u = np.clip((rel * d[None, :, :]).sum(axis=2) / length2[None, :], 0.0, 1.0)
     nearest = a[None, :, :] + u[..., None] * d[None, :, :]
     return np.hypot(*(points[:, None, :] - nearest).transpose(2, 0, 1)).min(axis=1)
+
+
+def _backs(plan: Plan, participant: str) -> bool:
+    p = plan.scenario.participant(participant)
+    return p is not None and any(a.kind is ActionKind.REVERSE for a in p.known_actions)
 
 
 def _allowed_lanes(plan: Plan, trajectory: Trajectory) -> list[object]:
@@ -111,7 +118,7 @@ def test_vehicles_stay_in_their_allowed_lanes(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_speeds_are_within_the_limit_and_negative_only_reversing_in_a_three_point_turn(name: str) -> None:
+def test_speeds_are_within_the_limit_and_negative_only_reversing(name: str) -> None:
     bad = []
     for plan in plans(name):
         for trajectory in plan.trajectories:
@@ -119,6 +126,8 @@ def test_speeds_are_within_the_limit_and_negative_only_reversing_in_a_three_poin
             speeds = [s.speed for s in trajectory.samples]
             turns = any(n.startswith(f"{trajectory.participant} ") and " legs (a " in n for n in plan.notes)
             floor = -(MANOEUVRE_SPEED + SPEED_SLACK) if turns else 0.0  # its legs at walking pace
+            if _backs(plan, trajectory.participant):  # backing along the road: at its reversing speed
+                floor = -(model(trajectory.body).limits.reverse_speed + SPEED_SLACK)
             if min(speeds) < floor or max(speeds) > cap + SPEED_SLACK:
                 bad.append(
                     f"{plan.site} {trajectory.participant}: speeds {min(speeds):.2f}..{max(speeds):.2f} m/s, "
@@ -136,16 +145,21 @@ def test_striker_and_victim_touch_at_the_faces_the_crash_type_names(name: str) -
         victim_trajectory = plan.trajectory(impact.victim)
         victim = victim_trajectory.at(impact.time)
         length, width = victim_trajectory.body.length, victim_trajectory.body.width
-        front = (striker.x, striker.y)
+        # the striker's leading face: its front, or backing, its rear (which meets the victim's front in a
+        # rear_end, its rear in a frontal crash: crash types read with front and rear swapped)
+        backing = backing_at(plan, impact.striker, impact.time)
+        hx, hy = heading_vector(striker.heading)
+        behind = plan.trajectory(impact.striker).body.length if backing else 0.0
+        front = (striker.x - behind * hx, striker.y - behind * hy)
         turn = _angle(striker.heading, victim.heading)
         where = f"{plan.site} seed {plan.seed} t={impact.time:.2f}"
-        assert math.dist(impact.point, front) < 1e-6, f"{where}: the impact point is not the striker's front"
+        assert math.dist(impact.point, front) < 1e-6, f"{where}: the impact point is not the striker's leading face"
         if impact.type is CrashType.REAR_END:
-            gap = math.dist(front, _face(victim, length, 1.0))
+            gap = math.dist(front, _face(victim, length, 0.0 if backing else 1.0))
             if gap > TOUCH or turn > 45.0:
                 bad.append(f"{where}: rear_end with the striker {gap:.2f} m from the victim's rear, {turn:.0f} deg")
         elif impact.type is CrashType.FRONTAL:
-            gap = math.dist(front, _face(victim, length, 0.0))
+            gap = math.dist(front, _face(victim, length, 1.0 if backing else 0.0))
             if gap > TOUCH or turn < 120.0:
                 bad.append(f"{where}: frontal with fronts {gap:.2f} m apart, headings {turn:.0f} deg apart")
         else:

@@ -15,7 +15,8 @@ def test_the_turner_replays_and_is_struck_where_planned() -> None:
     plan = k_turn_plan()
     verdict = check(plan)
     assert verdict.passed, verdict.dumps()
-    assert [f.check for f in verdict.findings] == ["xsd", "replay", "collision", "pair", "impact_angle", "lane_lines"]
+    checks = ["xsd", "replay", "collision", "pair", "impact_angle", "lane_lines", "on_road"]
+    assert [f.check for f in verdict.findings] == checks  # on_road: it reverses, and its body stays on the road
     impact = verdict.facts["impact"]
     assert impact["striker_face"].startswith("front") and "left" in impact["victim_face"]
     assert abs(impact["time"] - plan.impact.time) <= 0.3

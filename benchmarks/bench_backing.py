@@ -1,0 +1,119 @@
+"""Parked and reversing moves on many maps: how many sites plan and pass SUMO's and OpenSCENARIO's
+oracles (esmini's too when it is found), the maps the moves were built on beside held-out ones.
+
+    python benchmarks/bench_backing.py [-m MAP]... [--roads 3] [--out DIR]
+
+The moves are the three examples (backing into the car stopped behind, backing out of a kerbside
+space into a passing car, a parked car struck) and three variants written here (a car struck while
+backing out, a parked car pulling out forwards, a backing car's rear into a crossing pedestrian).
+Without -m: the example town and CARLA's Town01 (built on), then Town02, Town04, Town07 (held out),
+from $SOVARC_SHARED. Prints one row per move and map, and the CPU time per map; asserts nothing.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import tempfile
+import time
+from pathlib import Path
+
+from sovarc.compiler.pipeline import Options, run_pipeline
+from sovarc.dsl import parse
+
+ROOT = Path(__file__).resolve().parent.parent
+SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
+CARLA = SHARED / "data" / "opendrive" / "carla"
+TUNED = [ROOT / "examples" / "maps" / "town.net.xml", CARLA / "Town01.xodr"]
+HELD_OUT = [CARLA / "Town02.xodr", CARLA / "Town04.xodr", CARLA / "Town07.xodr"]
+EXAMPLES = [
+    "straight_reverse_into_stopped_rear_end",
+    "straight_back_out_of_parking_rear_end",
+    "straight_parked_car_struck_rear_end",
+]
+TEMPLATE = """scenario {name} {{
+  environment {{
+    weather clear
+    lighting daylight
+  }}
+  road {{
+    kind straight
+    lanes 2
+    speed_limit 25 mph
+  }}
+  vehicle V1 {{
+    heading north
+    lane 1
+    speed 3 mph
+    actions {{
+      {first}
+    }}
+  }}
+  {other} {{
+    heading {heading}
+    lane {lane}
+    speed {speed}
+    actions {{
+      {second}
+    }}
+  }}
+  crash {{
+    type {crash}
+    striker {striker}
+    victim {victim}
+  }}
+}}
+"""
+VARIANTS = {
+    "struck_backing_out": dict(
+        first="parked\n      reverse", other="vehicle V2", heading="north", lane="1", speed="20 mph",
+        second="follow_lane", crash="rear_end", striker="V2", victim="V1",
+    ),
+    "parked_pulls_out": dict(
+        first="parked\n      drive_into", other="vehicle V2", heading="north", lane="1", speed="20 mph",
+        second="follow_lane", crash="rear_end", striker="V2", victim="V1",
+    ),
+    "backing_into_pedestrian": dict(
+        first="reverse", other="pedestrian P1", heading="east", lane="unknown", speed="unknown",
+        second="cross", crash="side", striker="V1", victim="P1",
+    ),
+}  # fmt: skip
+
+
+def scenarios() -> list[tuple[str, str]]:
+    found = [(n, (ROOT / "examples" / "scenarios" / f"{n}.sov").read_text()) for n in EXAMPLES]
+    return found + [(n, TEMPLATE.format(name=n, **fields)) for n, fields in VARIANTS.items()]
+
+
+def row(name: str, text: str, map_path: Path, roads: int, out: Path) -> str:
+    options = Options(map=map_path, roads=roads, targets=("sumo", "openscenario"), out_dir=out / map_path.stem / name)
+    try:
+        slots, _ = run_pipeline(parse(text), start="assume", options=options)
+    except Exception as error:  # a failure of the whole run is a figure too
+        return f"error: {type(error).__name__}: {str(error).splitlines()[0][:90]}"
+    planned = [r for r in slots.results if r.plan is not None]
+    passed = [r for r in planned if all(v.passed for v in r.verdicts.values())]
+    return f"{len(passed)}/{len(slots.results)} pass ({len(planned)} planned)"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("-m", "--map", action="append", type=Path, help="maps (default: built-on, then held-out)")
+    parser.add_argument("--roads", type=int, default=3)
+    parser.add_argument("--out", type=Path, default=None)
+    args = parser.parse_args()
+    maps = (
+        [(m, "") for m in args.map]
+        if args.map
+        else [(m, "built on") for m in TUNED] + [(m, "held out") for m in HELD_OUT]
+    )
+    out = args.out or Path(tempfile.mkdtemp(prefix="bench_backing_"))
+    for map_path, why in maps:
+        start = time.process_time()
+        lines = [f"  {name:<42} {row(name, text, map_path, args.roads, out)}" for name, text in scenarios()]
+        label = f"{map_path.name}, {why}" if why else map_path.name
+        print(f"{label} (CPU {time.process_time() - start:.0f} s)", *lines, sep="\n")
+
+
+if __name__ == "__main__":
+    main()
