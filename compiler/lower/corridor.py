@@ -20,7 +20,7 @@ from sovarc.compiler.lower.route import Manoeuvre, change_length
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.maps.sites import MEDIAN_MAX
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import CAR, Body
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
@@ -81,6 +81,7 @@ class Drive:
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
     site: str = ""  # the site's id, for errors
     manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
+    body: Body = CAR  # what drives it: the room a turn needs is its body's
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -204,7 +205,7 @@ class Drive:
         count = len(self.corridor.other if self.against else self.corridor.own)
         numbers = [_clamp(to, count)] if isinstance(to, int) else [count, *range(1, count)]
         lines = [self.corridor.other_line(n) if self.against else self.corridor.own_line(n) for n in numbers]
-        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), CAR)
+        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), self.body)
         if not plan.fits:
             return self._k_turn(index, at, band, list(zip(numbers, lines, strict=True)))
         if number != numbers[0]:
@@ -226,7 +227,7 @@ class Drive:
         halfway along the road at the earliest: stopping and reversing takes some ten seconds more
         than one sweep, and traffic behind the car then has the road's length to come up."""
         at = max(at, kturn.ALONG * self.line.length)
-        found = kturn.choose(band, self.line.point(at), lanes, CAR)
+        found = kturn.choose(band, self.line.point(at), lanes, self.body)
         if found is None:
             raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}", kturn.MAX_LEGS)
         number, d_to, plan = found

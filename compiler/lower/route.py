@@ -13,10 +13,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from sovarc.compiler.geometry.polyline import Polyline
-from sovarc.compiler.vehicles import PLANNED, Body
+from sovarc.compiler.vehicles import PLANNED, Body, model
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
-LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a turn may ask (the vehicle model's; it caps curve speeds)
+LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a car's turn may ask (each body's own caps its curve speeds)
 LEAD = 20.0  # m: the least a participant drives before its first action, so that it is seen moving
 CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change
@@ -99,7 +99,7 @@ class Route:
     def speed_caps(self) -> tuple[np.ndarray, np.ndarray]:
         """(arc lengths, speed cap at each) along the line (a vehicle's is already smoothed)."""
         if self.caps is None:
-            caps = np.sqrt(LATERAL_ACCEL * np.minimum(self._radii(), 1e6))
+            caps = np.sqrt(model(self.body).limits.lateral_accel * np.minimum(self._radii(), 1e6))
             for m in self.manoeuvres:
                 legs = (self.line.s > m.lo + 1e-6) & (self.line.s <= m.hi)
                 caps[legs] = np.minimum(caps[legs], MANOEUVRE_SPEED)

@@ -23,7 +23,7 @@ from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 
@@ -49,10 +49,19 @@ def vehicle_route(
     if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
         raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))
     arm = next(a for a in match.site.arms if a.id == placement.arm)
-    lane = placement.lane or 1
+    body = participant_model(p).body
+    # A cyclist keeps to the right-most lane of its direction (the kerb lane), whatever lane the
+    # report gives; the junction move then leaves from that lane, as a vehicle's does.
+    lane = 1 if body.vclass == "bicycle" else placement.lane or 1
     corridor = Corridor.entering(arm)
     drive = Drive(
-        corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane, site=match.site.id
+        corridor,
+        corridor.own_line(lane),
+        lane,
+        speed=speed,
+        wrong_way_lane=wrong_way_lane,
+        site=match.site.id,
+        body=body,
     )
     actions = p.known_actions
     approach_lanes: tuple[LaneInfo, ...] = ()
@@ -72,7 +81,7 @@ def vehicle_route(
     line, from_s = drive.line.smoothing_except([(m.lo, m.hi) for m in drive.manoeuvres])
     if entry is not None and approach_lanes:  # its body kept in its lane up to the stop line (swing.py)
         approach = Approach.of(float(np.interp(entry, from_s, line.s)), ((a.shape, a.width) for a in approach_lanes))
-        line, from_s, _ = keep_in_lane(line, from_s, approach, CAR)
+        line, from_s, _ = keep_in_lane(line, from_s, approach, body)
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
@@ -83,7 +92,7 @@ def vehicle_route(
     drive.lanes.update(lanes_touched(line, match))
     return Route(
         participant=p,
-        body=CAR,
+        body=body,
         line=line,
         events=events,
         lanes=tuple(sorted(drive.lanes)),
@@ -233,9 +242,9 @@ def _u_turn(drive: Drive, arm: Arm, to: Any, site: str, index: int) -> tuple[Pol
     numbers = [min(max(to, 1), count)] if isinstance(to, int) else [count, *range(1, count)]
     end = drive.line.point(drive.line.length)
     lanes = [(n, corridor.own_line(n)) for n in numbers]
-    number, d_to, plan = choose(band, end, lanes, CAR)
+    number, d_to, plan = choose(band, end, lanes, drive.body)
     if not plan.fits:
-        found = kturn.choose(band, end, lanes, CAR)
+        found = kturn.choose(band, end, lanes, drive.body)
         if found is None:
             raise too_narrow(band, f"on {site}, the U-turn from {arm.id}", kturn.MAX_LEGS)
         number, d_to, legs = found

@@ -37,11 +37,11 @@ import z3
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.lower.contact import Contact
 from sovarc.compiler.lower.route import LEAD, Route
-from sovarc.compiler.vehicles import PLANNED
+from sovarc.compiler.vehicles import PLANNED, model
 from sovarc.dsl.ir import ActionKind, CrashType, Role
 
-A_UP = PLANNED.start_accel  # m/s^2, starting from rest (the vehicle model's)
-B_DOWN = PLANNED.stop_decel  # m/s^2, braking to rest
+A_UP = PLANNED.start_accel  # m/s^2, a car starting from rest (each body's own: ramps())
+B_DOWN = PLANNED.stop_decel  # m/s^2, a car braking to rest
 DWELL = 0.5  # s, the least a stop lasts
 NICE_DWELL = 1.5  # s
 V_MIN = {Role.VEHICLE: 1.5, Role.PEDESTRIAN: 0.5}  # m/s while moving
@@ -279,9 +279,10 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
             need(vfact.label, z3.And(v >= max(low, 0.75 * pref), v <= max(low, pref)))
         leg = Leg(leg_start, end, from_rest, end is not None, v, t, begin)
         if end is not None:
-            ramps = (v * v / (2 * A_UP) if from_rest else 0) + v * v / (2 * B_DOWN)
-            need(f"{pid}.chain", end - leg_start == v * t - ramps)
-            need(f"{pid}.chain", t >= (v / A_UP if from_rest else 0) + v / B_DOWN)
+            up, down = ramps(route)
+            both = (v * v / (2 * up) if from_rest else 0) + v * v / (2 * down)
+            need(f"{pid}.chain", end - leg_start == v * t - both)
+            need(f"{pid}.chain", t >= (v / up if from_rest else 0) + v / down)
             dwell = z.real(f"{pid}.dwell{j + 1}")
             need(f"{pid}.chain", dwell >= (NICE_DWELL if nice else DWELL))
             motion.dwells.append(dwell)
@@ -292,6 +293,12 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
         motion.stopped_at_impact = True
         motion.impact_s = positions[-1]
     return motion
+
+
+def ramps(route: Route) -> tuple[float, float]:
+    """The trapezoid's ramps of a route's body: its start from rest and its braking to rest (m/s^2)."""
+    limits = model(route.body).limits
+    return limits.start_accel, limits.stop_decel
 
 
 def _leg_cap(route: Route, j: int, stops: list[Any], reach: float | None) -> float:
@@ -378,7 +385,8 @@ def _contact(problem: Problem, motions: dict[str, Motion], t_hit: Any, need: Any
 def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool) -> None:
     """The participant is at arc length s at time t_hit, cruising on its last leg."""
     leg = motion.legs[-1]
-    ramp = leg.v * leg.v / (2 * A_UP) if leg.from_rest else 0
+    up, _ = ramps(motion.route)
+    ramp = leg.v * leg.v / (2 * up) if leg.from_rest else 0
     # Seen moving before the crash: LEAD metres when the site allows (a short arm of a city
     # junction may not; then a few metres do).
     lead = (LEAD if nice else MIN_LEAD) if motion.route.participant.role is Role.VEHICLE else 2.0
@@ -386,7 +394,7 @@ def _arrive(pid: str, motion: Motion, s: Any, t_hit: Any, need: Any, nice: bool)
     if nice and not leg.from_rest:
         need(f"{pid}.route", s - leg.start >= 3.0 * leg.v)
     need("impact", s - leg.start == leg.v * (t_hit - leg.begin) - ramp)
-    need("impact", t_hit - leg.begin >= (leg.v / A_UP if leg.from_rest else 0))
+    need("impact", t_hit - leg.begin >= (leg.v / up if leg.from_rest else 0))
     need(f"{pid}.route", s <= motion.route.line.length - 1.0)
 
 

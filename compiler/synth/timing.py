@@ -18,7 +18,7 @@ from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 from sovarc.compiler.lower.solve import A_UP, B_DOWN, LegValues
 from sovarc.compiler.vehicles import PLANNED
 
-MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
+MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a car's piece (the trapezoid's ramps use A_UP, B_DOWN)
 MAX_JERK = 12.0  # m/s^3
 
 
@@ -29,8 +29,16 @@ class Knot:
     v: float
 
 
-def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_time: float) -> list[Knot]:
-    """The corners of the trapezoid profile, from t = 0 to end_time."""
+def knots(
+    legs: tuple[LegValues, ...],
+    start: float,
+    initial_dwell: float,
+    end_time: float,
+    ramps: tuple[float, float] = (A_UP, B_DOWN),
+) -> list[Knot]:
+    """The corners of the trapezoid profile, from t = 0 to end_time; `ramps`: the body's start from
+    rest and braking to rest (m/s^2), as the solver planned them."""
+    up, down = ramps
     if not legs:  # stationary throughout
         return [Knot(0.0, start, 0.0), Knot(end_time, start, 0.0)]
     first = legs[0]
@@ -40,14 +48,14 @@ def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_t
     for leg in legs:
         t, s, v = leg.begin, leg.start, leg.v
         if leg.from_rest:
-            t, s = t + v / A_UP, s + v * v / (2 * A_UP)
+            t, s = t + v / up, s + v * v / (2 * up)
             out.append(Knot(t, s, v))
         if leg.end is None:
             out.append(Knot(end_time, s + v * (end_time - t), v))
             break
         assert leg.duration is not None
-        brake_at = leg.begin + leg.duration - v / B_DOWN
-        out.append(Knot(brake_at, leg.end - v * v / (2 * B_DOWN), v))
+        brake_at = leg.begin + leg.duration - v / down
+        out.append(Knot(brake_at, leg.end - v * v / (2 * down), v))
         out.append(Knot(leg.begin + leg.duration, leg.end, 0.0))
         rest_until = leg.begin + leg.duration + leg.dwell
         if leg is legs[-1]:
@@ -70,8 +78,9 @@ def _merged(points: list[Knot]) -> list[Knot]:
     return out
 
 
-def sample(points: list[Knot], times: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
-    """Arc length and speed at each time; also how many pieces kept constant acceleration."""
+def sample(points: list[Knot], times: np.ndarray, max_accel: float = MAX_ACCEL) -> tuple[np.ndarray, np.ndarray, int]:
+    """Arc length and speed at each time; also how many pieces kept constant acceleration
+    (`max_accel`: the most Ruckig may use, the body's)."""
     s_out = np.empty(len(times))
     v_out = np.empty(len(times))
     fallbacks = 0
@@ -81,7 +90,7 @@ def sample(points: list[Knot], times: np.ndarray) -> tuple[np.ndarray, np.ndarra
         if not inside.any():
             continue
         local = times[inside] - a.t
-        piece = _ruckig(otg, a, b)
+        piece = _ruckig(otg, a, b, max_accel)
         if piece is None:
             fallbacks += 1
             duration = b.t - a.t
@@ -95,7 +104,7 @@ def sample(points: list[Knot], times: np.ndarray) -> tuple[np.ndarray, np.ndarra
     return s_out, np.maximum(v_out, 0.0), fallbacks
 
 
-def _ruckig(otg: Ruckig, a: Knot, b: Knot) -> Trajectory | None:
+def _ruckig(otg: Ruckig, a: Knot, b: Knot, max_accel: float) -> Trajectory | None:
     duration = b.t - a.t
     if duration <= 1e-6:
         return None
@@ -106,7 +115,7 @@ def _ruckig(otg: Ruckig, a: Knot, b: Knot) -> Trajectory | None:
     inp.target_position, inp.target_velocity, inp.target_acceleration = [b.s], [b.v], [0.0]
     inp.max_velocity = [max(a.v, b.v) * 1.1 + 0.5]
     inp.min_velocity = [0.0]
-    inp.max_acceleration = [MAX_ACCEL]
+    inp.max_acceleration = [max_accel]
     inp.max_jerk = [MAX_JERK]
     inp.minimum_duration = duration
     trajectory = Trajectory(1)

@@ -17,6 +17,7 @@ import hashlib
 from collections.abc import Sequence
 
 from sovarc.compiler.plan import Plan, Trajectory
+from sovarc.compiler.vehicles import CAR_MODEL, model
 from sovarc.dsl import to_text
 from sovarc.dsl.ir import Unknown
 from sovarc.targets.sumo.network import Network, Spot
@@ -29,6 +30,8 @@ COLLISIONS = "collisions.xml"  # written by SUMO when the scenario runs
 
 COLOURS = {"striker": "1,0,0", "victim": "0,0.4,1", "other": "0.6,0.6,0.6"}
 PREFIX = "sovarc."
+# SUMO's drawing of each class (a pickup is drawn as the passenger car it is to SUMO).
+GUI_SHAPES = {"delivery": "delivery", "bus": "bus", "truck": "truck", "motorcycle": "motorcycle", "bicycle": "bicycle"}
 
 
 def role_of(plan: Plan, participant: str) -> str:
@@ -76,8 +79,9 @@ def _types(plan: Plan) -> list[str]:
             ("length", num(t.body.length, 2)),
             ("width", num(t.body.width, 2)),
             ("minGap", "0.50" if is_person(t) else "2.50"),
+            *_drive(t),
             ("speedDev", "0"),
-            ("guiShape", "pedestrian" if is_person(t) else "passenger"),
+            ("guiShape", "pedestrian" if is_person(t) else GUI_SHAPES.get(t.body.vclass, "passenger")),
             ("color", COLOURS[role]),
         ]
         facts = [
@@ -90,6 +94,20 @@ def _types(plan: Plan) -> list[str]:
         if t.edges and not is_person(t):
             children.append(empty("route", (("id", f"{t.participant}.route"), ("edges", " ".join(t.edges))), 4))
     return children
+
+
+def _drive(t: Trajectory) -> list[tuple[str, str]]:
+    """A kind's own acceleration and braking. The car's (and a walker's) type keeps SUMO's defaults,
+    as it always had: the replay places every body on its samples, so these only tell a reader (and
+    SUMO's own model, were it to drive the vehicle) what the kind can do."""
+    kind = model(t.body)
+    if is_person(t) or kind is CAR_MODEL:
+        return []
+    return [
+        ("accel", num(kind.drive_accel, 2)),
+        ("decel", num(kind.limits.stop_decel, 2)),
+        ("emergencyDecel", num(kind.drive_brake, 2)),
+    ]
 
 
 def _words(value: object) -> str:
