@@ -12,11 +12,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Polyline, bezier, blend, concat
 from sovarc.compiler.lower import kturn
-from sovarc.compiler.lower.route import Manoeuvre, change_length
+from sovarc.compiler.lower.route import Manoeuvre, change_length, swept_change_length
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.maps.sites import MEDIAN_MAX
@@ -26,6 +27,7 @@ from sovarc.dsl.ir import ActionKind, Side
 
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
 DRIVEWAY = 8.0  # m of driveway before (or after) the curve
+SWING_MARGIN = 0.15  # m kept in hand when a long body's rear swings out in a lane change
 
 
 @dataclass(frozen=True)
@@ -82,6 +84,7 @@ class Drive:
     site: str = ""  # the site's id, for errors
     manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
     body: Body = CAR  # what drives it: the room a turn needs is its body's
+    junction: tuple[float, float] | None = None  # where its junction move begins and ends on `line`
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -110,10 +113,22 @@ class Drive:
             self._use((self.corridor.other if self.against else self.corridor.own)[n - 1])
         return self._blend(index, at, self._target(number, self.against))
 
+    def _lane_width(self) -> float:
+        lanes = self.corridor.other if self.against else self.corridor.own
+        return lanes[_clamp(self.lane, len(lanes)) - 1].width
+
+    def _change_length(self, lanes: float) -> float:
+        """How long a move across `lanes` lane widths takes: long enough for the speed, and for the
+        body's rear not to swing over the far line of the lane it leaves (the oracle's tolerance
+        less a margin for the synthesized path)."""
+        width = self._lane_width()
+        room = width / 2.0 + LINE_TOLERANCE - self.body.width / 2.0 - SWING_MARGIN
+        return max(change_length(self.speed), swept_change_length(self.body, lanes * width, room))
+
     def shift_to(self, number: int) -> None:
         """Change to lane `number` just before the end of the road (to reach a junction connection)."""
         end = self.line.length - 3.0
-        start = max(0.0, end - change_length(self.speed))
+        start = max(0.0, end - self._change_length(abs(number - self.lane)))
         if end - start < 8.0:
             raise LoweringError(
                 Diagnostic(
@@ -126,7 +141,7 @@ class Drive:
     def drift_to(self, number: int, at: float) -> float:
         """Move over to own lane `number` from arc length `at` on (a turn that ends in the lane
         the report names when no junction connection enters it); returns where it is there."""
-        end = min(at + change_length(self.speed), self.line.length - 5.0)
+        end = min(at + self._change_length(abs(number - self.lane)), self.line.length - 5.0)
         if end - at < 8.0:
             return at
         self.line = blend(self.line, self._target(number, False), at, end)
@@ -181,7 +196,8 @@ class Drive:
 
     def _blend(self, index: int, at: float, target: Polyline, until: float | None = None) -> float:
         """Move across to `target` from arc length `at`, ending by `until` if given."""
-        end = at + change_length(self.speed)
+        shift = target.project(self.line.point(at))[1]
+        end = at + self._change_length(shift / self._lane_width())
         end = min(end, self.line.length - 5.0, self.line.length if until is None else until)
         if end - at < 2.0:
             raise LoweringError(

@@ -150,6 +150,29 @@ def change_length(speed: float) -> float:
     return max(MIN_CHANGE, CHANGE_TIME * speed)
 
 
+def swept_change_length(body: Body, shift: float, room: float) -> float:
+    """The shortest lane change (a smoothstep sideways move of `shift` metres) over which a body
+    keeps its rear within `room` metres of its front's starting line on the far side: as the front
+    turns across, the rear (a body length behind, along the heading) swings out the other way, by
+    about the length times the heading's slope. A car's need (about 12 m) is under MIN_CHANGE;
+    a 12 m bus's is some 40 m."""
+    if shift <= 0.0:
+        return 0.0
+    u = np.linspace(0.0, 1.0, 201)
+    across, slope = u * u * (3.0 - 2.0 * u), 6.0 * u * (1.0 - u)  # the smoothstep and its derivative
+
+    def swing(length: float) -> float:
+        return shift * float(np.max(body.length * slope / length - across))
+
+    lo, hi = 1.0, 400.0
+    if swing(hi) > room:
+        return hi
+    for _ in range(40):  # bisection: the swing falls as the change grows longer
+        mid = (lo + hi) / 2.0
+        lo, hi = (mid, hi) if swing(mid) > room else (lo, mid)
+    return hi
+
+
 def stop_range(before: float, after: float) -> tuple[float, float]:
     """A stop between the end of one stretch and the start of the next."""
     lo, hi = before + 1.0, after - 1.0

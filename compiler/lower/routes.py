@@ -10,6 +10,7 @@ junction are applied by a `Drive` along the road they happen on.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import Any
 
@@ -23,7 +24,7 @@ from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
-from sovarc.compiler.vehicles import participant_model
+from sovarc.compiler.vehicles import Body, model, participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 
@@ -31,6 +32,8 @@ ROAD_MOVES = frozenset({ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.
 DEFAULT_MOVES = (ActionKind.GO_ACROSS, ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT)
 GAP = 10.0  # m between two actions' stretches
 DRIVEWAY_TO_JUNCTION = 35.0  # m from a driveway a car pulls out of to the junction it then crosses
+CORNER_WINDOW = 8.0  # m over which a corner's radius is measured (the speed caps' window)
+CORNER_SLACK = 0.9  # a path may bend this much tighter than the line it follows (synthesis's Dubins radii)
 
 
 def vehicle_route(
@@ -85,6 +88,9 @@ def vehicle_route(
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
+
+    if drive.junction is not None:
+        _check_corner(line, carry(drive.junction[0]), carry(drive.junction[1]), body, p, match.site.id)
 
     events = [replace(e, lo=carry(e.lo), hi=carry(e.hi)) for e in events]
     manoeuvres = tuple(m.carried(carry) for m in drive.manoeuvres)
@@ -176,10 +182,28 @@ def _through_junction(
                 f"turns into lane {exit_number} (no connection enters lane {to}), then moves to lane {to}"
             )
             done = settled
+    drive.junction = (entry, done)
     if move_at is not None:
         drive.stretches[move_at] = (entry, done)
     _along(drive, actions, after, start=done + GAP, side=side)
     return entry, approach
+
+
+def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participant, site: str) -> None:
+    """Refuse a junction move whose line bends tighter than the body can: a bus or truck cannot
+    follow a corner a car takes (its tightest bend is three times as wide), and its planned path,
+    kept to its own radius, would leave the line and the road. Another site may have a wider corner."""
+    tightest = model(body).limits.path_radius
+    inside = (line.s >= lo) & (line.s <= hi)
+    radius = float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
+    if radius < CORNER_SLACK * tightest:
+        raise LoweringError(
+            Diagnostic(
+                f"on {site}, {p.id} ({body.vclass}, {body.length:g} m) cannot take the junction's corner: "
+                f"its line bends at a {radius:.1f} m radius, the body's tightest is {tightest:g} m",
+                p.meta.span,
+            )
+        )
 
 
 def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
