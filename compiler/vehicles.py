@@ -19,6 +19,16 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+# SUMO's drawing of each vehicle class that has one of its own.
+GUI_SHAPES = {
+    "delivery": "delivery",
+    "bus": "bus",
+    "truck": "truck",
+    "motorcycle": "motorcycle",
+    "bicycle": "bicycle",
+    "pedestrian": "pedestrian",
+}
+
 
 @dataclass(frozen=True)
 class Body:
@@ -27,6 +37,11 @@ class Body:
     length: float  # m
     width: float  # m
     vclass: str  # SUMO vehicle class: passenger, delivery, bus, truck, motorcycle, bicycle, pedestrian
+
+    @property
+    def gui_shape(self) -> str:
+        """How SUMO draws it (its guiShape): a class's own shape, a passenger car's for the car and the pickup."""
+        return GUI_SHAPES.get(self.vclass, "passenger")
 
     @property
     def front_ref(self) -> bool:

@@ -30,8 +30,6 @@ COLLISIONS = "collisions.xml"  # written by SUMO when the scenario runs
 
 COLOURS = {"striker": "1,0,0", "victim": "0,0.4,1", "other": "0.6,0.6,0.6"}
 PREFIX = "sovarc."
-# SUMO's drawing of each class (a pickup is drawn as the passenger car it is to SUMO).
-GUI_SHAPES = {"delivery": "delivery", "bus": "bus", "truck": "truck", "motorcycle": "motorcycle", "bicycle": "bicycle"}
 
 
 def role_of(plan: Plan, participant: str) -> str:
@@ -81,7 +79,7 @@ def _types(plan: Plan) -> list[str]:
             ("minGap", "0.50" if is_person(t) else "2.50"),
             *_drive(t),
             ("speedDev", "0"),
-            ("guiShape", "pedestrian" if is_person(t) else GUI_SHAPES.get(t.body.vclass, "passenger")),
+            ("guiShape", t.body.gui_shape),
             ("color", COLOURS[role]),
         ]
         facts = [
