@@ -24,7 +24,7 @@ from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
-from sovarc.compiler.vehicles import Body, model, participant_model
+from sovarc.compiler.vehicles import PLANNED, Body, model, participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 
@@ -182,7 +182,8 @@ def _through_junction(
                 f"turns into lane {exit_number} (no connection enters lane {to}), then moves to lane {to}"
             )
             done = settled
-    drive.junction = (entry, done)
+    if own:  # its line follows one of the junction's connections (a U-turn's or a wrong-way line is laid out)
+        drive.junction = (entry, done)
     if move_at is not None:
         drive.stretches[move_at] = (entry, done)
     _along(drive, actions, after, start=done + GAP, side=side)
@@ -190,10 +191,14 @@ def _through_junction(
 
 
 def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participant, site: str) -> None:
-    """Refuse a junction move whose line bends tighter than the body can: a bus or truck cannot
+    """Refuse a junction connection whose line bends tighter than the body can: a bus or truck cannot
     follow a corner a car takes (its tightest bend is three times as wide), and its planned path,
-    kept to its own radius, would leave the line and the road. Another site may have a wider corner."""
+    kept to its own radius, would leave the line and the road. Another site may have a wider corner.
+    A connection is drawn (by SUMO) for a car, which takes it as it is: only a body that turns wider
+    than the car's tightest is checked."""
     tightest = model(body).limits.path_radius
+    if tightest <= PLANNED.path_radius:
+        return
     inside = (line.s >= lo) & (line.s <= hi)
     radius = float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
     if radius < CORNER_SLACK * tightest:
