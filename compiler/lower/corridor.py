@@ -120,7 +120,11 @@ class Drive:
     def _change_length(self, lanes: float) -> float:
         """How long a move across `lanes` lane widths takes: long enough for the speed, and for the
         body's rear not to swing over the far line of the lane it leaves (the oracle's tolerance
-        less a margin for the synthesized path)."""
+        less a margin for the synthesized path). A body no longer than the car changes lanes as a car
+        always has: its swing is within the shortest change but where the road is wide or the move
+        long (a swerve into an oncoming lane past a gap), and a car's plans are not to change."""
+        if self.body.length <= CAR.length:
+            return change_length(self.speed)
         width = self._lane_width()
         room = width / 2.0 + LINE_TOLERANCE - self.body.width / 2.0 - SWING_MARGIN
         return max(change_length(self.speed), swept_change_length(self.body, lanes * width, room))

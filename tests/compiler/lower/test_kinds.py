@@ -35,7 +35,7 @@ def test_a_lane_change_is_long_enough_for_the_body_to_keep_its_rear_in(kind: str
     assert _swing(length, body.length, LANE) <= room + 1e-3  # its rear stays in at that length
     assert _swing(0.9 * length, body.length, LANE) > room  # and not much shorter
     if body.length <= CAR.length + 1.0:
-        assert length < MIN_CHANGE  # a car's own change is never lengthened: its plans stay as they were
+        assert length < MIN_CHANGE  # a car-sized body's change between two lanes needs no more than the shortest
     else:
         assert length > MIN_CHANGE  # a bus's or truck's is (about 40 m)
 
