@@ -52,8 +52,8 @@ class Body:
 
 @dataclass(frozen=True)
 class Limits:
-    """How a participant may be planned to move. Every kind has its own; modules that do not yet ask
-    which kind they plan use PLANNED, the car's."""
+    """How a participant may be planned to move. Every kind has its own: lowering and synthesis read
+    `model(body).limits` of the body each route carries (PLANNED is the car's)."""
 
     path_radius: float  # m: the tightest bend a planned or reshaped path may take (a tight junction corner)
     plan_accel: float  # m/s^2: the most a planned trajectory asks, per axis (TOPP-RA) and along it (Ruckig)
