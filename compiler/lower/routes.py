@@ -68,6 +68,12 @@ def vehicle_route(
     )
     actions = p.known_actions
     approach_lanes: tuple[LaneInfo, ...] = ()
+    bike = _bike_lane(corridor.own[0], road_map) if body.vclass == "bicycle" else None
+    if bike is not None and match.site.kind is RoadKind.STRAIGHT:  # along a road, in its bike lane
+        # the stretch of lane 1 the site uses, moved over onto the bike lane's centre
+        drive.line = drive.line.offset((corridor.own[0].width + bike.width) / 2.0)
+        drive.lanes = set(bike.lanes)
+        drive.notes.append(f"rides in bike lane {bike.id}")
     if match.site.kind is RoadKind.STRAIGHT:
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
         entry = None
@@ -188,6 +194,20 @@ def _through_junction(
         drive.stretches[move_at] = (entry, done)
     _along(drive, actions, after, start=done + GAP, side=side)
     return entry, approach
+
+
+def _bike_lane(lane: LaneInfo, road_map: RoadMap) -> LaneInfo | None:
+    """The bike lane beside a road's right-most car lane (SUMO's lane that allows bicycles and no
+    cars, just right of it), when the car lane runs on one edge; None when it has none."""
+    if len(lane.edges) != 1:
+        return None
+    edge = road_map.net.getEdge(lane.edge)
+    beside = next((x for x in edge.getLanes() if x.getIndex() == lane.index - 1), None)
+    if beside is None or not beside.allows("bicycle") or beside.allows("passenger"):
+        return None
+    shape = tuple((float(x), float(y)) for x, y, *_ in beside.getShape())
+    length, speed = round(beside.getLength(), 3), round(beside.getSpeed(), 3)
+    return LaneInfo(beside.getID(), lane.edge, beside.getIndex(), 1, round(beside.getWidth(), 3), length, speed, shape)
 
 
 def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participant, site: str) -> None:
