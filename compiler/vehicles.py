@@ -15,7 +15,19 @@ built into a standalone FMU; the simulated vehicle it drives is the one modelled
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from typing import Any
+
+# SUMO's drawing of each vehicle class that has one of its own.
+GUI_SHAPES = {
+    "delivery": "delivery",
+    "bus": "bus",
+    "truck": "truck",
+    "motorcycle": "motorcycle",
+    "bicycle": "bicycle",
+    "pedestrian": "pedestrian",
+}
 
 
 @dataclass(frozen=True)
@@ -27,6 +39,11 @@ class Body:
     vclass: str  # SUMO vehicle class: passenger, delivery, bus, truck, motorcycle, bicycle, pedestrian
 
     @property
+    def gui_shape(self) -> str:
+        """How SUMO draws it (its guiShape): a class's own shape, a passenger car's for the car and the pickup."""
+        return GUI_SHAPES.get(self.vclass, "passenger")
+
+    @property
     def front_ref(self) -> bool:
         """Whether a sample's point is the front-bumper centre (a vehicle) rather than the body centre
         (a pedestrian): the plan's convention, and SUMO's."""
@@ -35,8 +52,8 @@ class Body:
 
 @dataclass(frozen=True)
 class Limits:
-    """How a participant may be planned to move. Every kind has its own; modules that do not yet ask
-    which kind they plan use PLANNED, the car's."""
+    """How a participant may be planned to move. Every kind has its own: lowering and synthesis read
+    `model(body).limits` of the body each route carries (PLANNED is the car's)."""
 
     path_radius: float  # m: the tightest bend a planned or reshaped path may take (a tight junction corner)
     plan_accel: float  # m/s^2: the most a planned trajectory asks, per axis (TOPP-RA) and along it (Ruckig)
@@ -45,6 +62,8 @@ class Limits:
     lateral_accel: float  # m/s^2: the most a curve may ask (comfortable; it caps speeds in curves)
     reverse_speed: float = 2.5  # m/s: the fastest it is planned to back (a walking pace or two: 9 km/h)
     reverse_accel: float = 1.0  # m/s^2: its ramps up and down when backing
+    usual_speed: float = math.inf  # m/s: the most it is planned to cruise at unless a report says faster
+    top_speed: float = math.inf  # m/s: the most it is planned to go unless a report says faster
 
 
 PLANNED = Limits(path_radius=3.0, plan_accel=4.5, start_accel=2.0, stop_decel=3.0, lateral_accel=2.5)
@@ -54,7 +73,17 @@ HEAVY = Limits(path_radius=9.0, plan_accel=3.0, start_accel=1.0, stop_decel=2.0,
 # Two wheels: a motorcycle leans through bends a car takes slower, but is planned no harder than a car.
 TWO_WHEELS = Limits(path_radius=2.5, plan_accel=4.5, start_accel=2.5, stop_decel=3.5, lateral_accel=3.0)
 # A cyclist: ramps of a rider's legs and rim brakes.
-CYCLIST = Limits(path_radius=2.0, plan_accel=3.0, start_accel=1.0, stop_decel=2.5, lateral_accel=2.0, reverse_speed=0)
+# An everyday rider cruises at 15-20 km/h and rarely passes 30.
+CYCLIST = Limits(
+    path_radius=2.0,
+    plan_accel=3.0,
+    start_accel=1.0,
+    stop_decel=2.5,
+    lateral_accel=2.0,
+    reverse_speed=0,
+    usual_speed=5.0,
+    top_speed=8.5,
+)
 
 
 @dataclass(frozen=True)
@@ -201,3 +230,10 @@ def model(body: Body) -> Model:
 def model_of(kind: str) -> Model:
     """The model of a kind named as the IR names it (`bus`, `pedestrian`); unknown kinds are staged as a car."""
     return MODELS.get(kind, CAR_MODEL)
+
+
+def participant_model(participant: Any) -> Model:
+    """The model of an IR participant: a pedestrian's, or its vehicle kind's (an unstated kind is a car)."""
+    if participant.role == "pedestrian":
+        return PEDESTRIAN_MODEL
+    return model_of(str(getattr(participant.kind, "value", "car")))

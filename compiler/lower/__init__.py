@@ -24,6 +24,7 @@ from sovarc.compiler.lower.routes import vehicle_route
 from sovarc.compiler.lower.solve import V_PED_MAX, ConflictError, Fact, Problem, Solution, solve
 from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites, scenario_needs, site_rotations
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
+from sovarc.compiler.vehicles import participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError, Severity, UnsatError
 from sovarc.dsl.ir import Action, ActionKind, CrashType, Heading, Participant, RoadKind, Role, Scenario, Side, Speed
 from sovarc.dsl.printer import format_speed
@@ -274,7 +275,7 @@ def _preferred(p: Participant, limit: float) -> float:
     if p.role is Role.PEDESTRIAN:
         return walking_speed(_reported(p))
     reported = _reported(p)
-    return reported if reported else USUAL_SHARE * limit
+    return reported if reported else min(USUAL_SHARE * limit, participant_model(p).limits.usual_speed)
 
 
 def _vmax(p: Participant, limit: float, limit_fact: Fact, facts: dict[str, Fact]) -> tuple[float, Fact]:
@@ -283,7 +284,7 @@ def _vmax(p: Participant, limit: float, limit_fact: Fact, facts: dict[str, Fact]
         return max(V_PED_MAX, reported or 0.0), facts[f"{p.id}.speed"]
     if reported:
         return max(limit, 1.25 * reported), facts[f"{p.id}.speed"]
-    return limit, limit_fact
+    return min(limit, participant_model(p).limits.top_speed), limit_fact  # a cyclist keeps below its top speed
 
 
 def _stationary(scenario: Scenario, striker: str) -> set[str]:

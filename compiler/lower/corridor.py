@@ -12,20 +12,22 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Polyline, bezier, blend, concat
 from sovarc.compiler.lower import kturn
-from sovarc.compiler.lower.route import Manoeuvre, change_length
+from sovarc.compiler.lower.route import Manoeuvre, change_length, swept_change_length
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, LaneInfo
 from sovarc.compiler.maps.sites import MEDIAN_MAX
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import CAR, Body
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Side
 
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
 DRIVEWAY = 8.0  # m of driveway before (or after) the curve
+SWING_MARGIN = 0.15  # m kept in hand when a long body's rear swings out in a lane change
 
 
 @dataclass(frozen=True)
@@ -81,6 +83,8 @@ class Drive:
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
     site: str = ""  # the site's id, for errors
     manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
+    body: Body = CAR  # what drives it: the room a turn needs is its body's
+    junction: tuple[float, float] | None = None  # where its junction move begins and ends on `line`
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])
@@ -109,10 +113,26 @@ class Drive:
             self._use((self.corridor.other if self.against else self.corridor.own)[n - 1])
         return self._blend(index, at, self._target(number, self.against))
 
+    def _lane_width(self) -> float:
+        lanes = self.corridor.other if self.against else self.corridor.own
+        return lanes[_clamp(self.lane, len(lanes)) - 1].width
+
+    def _change_length(self, lanes: float) -> float:
+        """How long a move across `lanes` lane widths takes: long enough for the speed, and for the
+        body's rear not to swing over the far line of the lane it leaves (the oracle's tolerance
+        less a margin for the synthesized path). A body no longer than the car changes lanes as a car
+        always has: its swing is within the shortest change but where the road is wide or the move
+        long (a swerve into an oncoming lane past a gap), and a car's plans are not to change."""
+        if self.body.length <= CAR.length:
+            return change_length(self.speed)
+        width = self._lane_width()
+        room = width / 2.0 + LINE_TOLERANCE - self.body.width / 2.0 - SWING_MARGIN
+        return max(change_length(self.speed), swept_change_length(self.body, lanes * width, room))
+
     def shift_to(self, number: int) -> None:
         """Change to lane `number` just before the end of the road (to reach a junction connection)."""
         end = self.line.length - 3.0
-        start = max(0.0, end - change_length(self.speed))
+        start = max(0.0, end - self._change_length(abs(number - self.lane)))
         if end - start < 8.0:
             raise LoweringError(
                 Diagnostic(
@@ -125,7 +145,7 @@ class Drive:
     def drift_to(self, number: int, at: float) -> float:
         """Move over to own lane `number` from arc length `at` on (a turn that ends in the lane
         the report names when no junction connection enters it); returns where it is there."""
-        end = min(at + change_length(self.speed), self.line.length - 5.0)
+        end = min(at + self._change_length(abs(number - self.lane)), self.line.length - 5.0)
         if end - at < 8.0:
             return at
         self.line = blend(self.line, self._target(number, False), at, end)
@@ -180,7 +200,8 @@ class Drive:
 
     def _blend(self, index: int, at: float, target: Polyline, until: float | None = None) -> float:
         """Move across to `target` from arc length `at`, ending by `until` if given."""
-        end = at + change_length(self.speed)
+        shift = target.project(self.line.point(at))[1]
+        end = at + self._change_length(shift / self._lane_width())
         end = min(end, self.line.length - 5.0, self.line.length if until is None else until)
         if end - at < 2.0:
             raise LoweringError(
@@ -204,7 +225,7 @@ class Drive:
         count = len(self.corridor.other if self.against else self.corridor.own)
         numbers = [_clamp(to, count)] if isinstance(to, int) else [count, *range(1, count)]
         lines = [self.corridor.other_line(n) if self.against else self.corridor.own_line(n) for n in numbers]
-        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), CAR)
+        number, d_to, plan = choose(band, p0, list(zip(numbers, lines, strict=True)), self.body)
         if not plan.fits:
             return self._k_turn(index, at, band, list(zip(numbers, lines, strict=True)))
         if number != numbers[0]:
@@ -226,7 +247,7 @@ class Drive:
         halfway along the road at the earliest: stopping and reversing takes some ten seconds more
         than one sweep, and traffic behind the car then has the road's length to come up."""
         at = max(at, kturn.ALONG * self.line.length)
-        found = kturn.choose(band, self.line.point(at), lanes, CAR)
+        found = kturn.choose(band, self.line.point(at), lanes, self.body)
         if found is None:
             raise too_narrow(band, f"on {self.site}, the U-turn of action {index + 1}", kturn.MAX_LEGS)
         number, d_to, plan = found

@@ -16,7 +16,7 @@ from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.vehicles import PLANNED, Body, model
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
-LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a turn may ask (the vehicle model's; it caps curve speeds)
+LATERAL_ACCEL = PLANNED.lateral_accel  # m/s^2: the most a car's turn may ask (each body's own caps its curve speeds)
 LEAD = 20.0  # m: the least a participant drives before its first action, so that it is seen moving
 CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change
@@ -102,8 +102,9 @@ class Route:
     def speed_caps(self) -> tuple[np.ndarray, np.ndarray]:
         """(arc lengths, speed cap at each) along the line (a vehicle's is already smoothed)."""
         if self.caps is None:
-            caps = np.sqrt(LATERAL_ACCEL * np.minimum(self._radii(), 1e6))
-            backing = model(self.body).limits.reverse_speed
+            limits = model(self.body).limits
+            caps = np.sqrt(limits.lateral_accel * np.minimum(self._radii(), 1e6))
+            backing = limits.reverse_speed
             for m in self.manoeuvres:
                 # backing: from where it starts, a line of few vertices (a straight lane) capped throughout
                 legs = (self.line.s > m.lo + (-1e-6 if m.backing else 1e-6)) & (self.line.s <= m.hi)
@@ -165,6 +166,29 @@ class Route:
 
 def change_length(speed: float) -> float:
     return max(MIN_CHANGE, CHANGE_TIME * speed)
+
+
+def swept_change_length(body: Body, shift: float, room: float) -> float:
+    """The shortest lane change (a smoothstep sideways move of `shift` metres) over which a body
+    keeps its rear within `room` metres of its front's starting line on the far side: as the front
+    turns across, the rear (a body length behind, along the heading) swings out the other way, by
+    about the length times the heading's slope. A car's need (about 12 m) is under MIN_CHANGE;
+    a 12 m bus's is some 40 m."""
+    if shift <= 0.0:
+        return 0.0
+    u = np.linspace(0.0, 1.0, 201)
+    across, slope = u * u * (3.0 - 2.0 * u), 6.0 * u * (1.0 - u)  # the smoothstep and its derivative
+
+    def swing(length: float) -> float:
+        return shift * float(np.max(body.length * slope / length - across))
+
+    lo, hi = 1.0, 400.0
+    if swing(hi) > room:
+        return hi
+    for _ in range(40):  # bisection: the swing falls as the change grows longer
+        mid = (lo + hi) / 2.0
+        lo, hi = (mid, hi) if swing(mid) > room else (lo, mid)
+    return hi
 
 
 def stop_range(before: float, after: float) -> tuple[float, float]:

@@ -10,6 +10,7 @@ junction are applied by a `Drive` along the road they happen on.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import Any
 
@@ -24,7 +25,7 @@ from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import PLANNED, Body, model, participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
 
@@ -32,6 +33,8 @@ ROAD_MOVES = frozenset({ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.
 DEFAULT_MOVES = (ActionKind.GO_ACROSS, ActionKind.TURN_RIGHT, ActionKind.TURN_LEFT)
 GAP = 10.0  # m between two actions' stretches
 DRIVEWAY_TO_JUNCTION = 35.0  # m from a driveway a car pulls out of to the junction it then crosses
+CORNER_WINDOW = 8.0  # m over which a corner's radius is measured (the speed caps' window)
+CORNER_SLACK = 0.9  # a path may bend this much tighter than the line it follows (synthesis's Dubins radii)
 
 
 def vehicle_route(
@@ -47,18 +50,33 @@ def vehicle_route(
     other direction a retrograde move drives in (the crash partner's); `prefer`: the junction move
     (and why) to plan when the actions name none. All three are chosen by the caller."""
     if is_backing(p):  # parked, or backing along the road (backing.py)
-        return backing_route(p, match, CAR, lanes_touched)
+        return backing_route(p, match, participant_model(p).body, lanes_touched)
     placement = match.placement(p.id)
     if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
         raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))
     arm = next(a for a in match.site.arms if a.id == placement.arm)
-    lane = placement.lane or 1
+    body = participant_model(p).body
+    # A cyclist keeps to the right-most lane of its direction (the kerb lane), whatever lane the
+    # report gives; the junction move then leaves from that lane, as a vehicle's does.
+    lane = 1 if body.vclass == "bicycle" else placement.lane or 1
     corridor = Corridor.entering(arm)
     drive = Drive(
-        corridor, corridor.own_line(lane), lane, speed=speed, wrong_way_lane=wrong_way_lane, site=match.site.id
+        corridor,
+        corridor.own_line(lane),
+        lane,
+        speed=speed,
+        wrong_way_lane=wrong_way_lane,
+        site=match.site.id,
+        body=body,
     )
     actions = p.known_actions
     approach_lanes: tuple[LaneInfo, ...] = ()
+    bike = _bike_lane(corridor.own[0], road_map) if body.vclass == "bicycle" else None
+    if bike is not None and match.site.kind is RoadKind.STRAIGHT:  # along a road, in its bike lane
+        # the stretch of lane 1 the site uses, moved over onto the bike lane's centre
+        drive.line = drive.line.offset((corridor.own[0].width + bike.width) / 2.0)
+        drive.lanes = set(bike.lanes)
+        drive.notes.append(f"rides in bike lane {bike.id}")
     if match.site.kind is RoadKind.STRAIGHT:
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
         entry = None
@@ -75,10 +93,13 @@ def vehicle_route(
     line, from_s = drive.line.smoothing_except([(m.lo, m.hi) for m in drive.manoeuvres])
     if entry is not None and approach_lanes:  # its body kept in its lane up to the stop line (swing.py)
         approach = Approach.of(float(np.interp(entry, from_s, line.s)), ((a.shape, a.width) for a in approach_lanes))
-        line, from_s, _ = keep_in_lane(line, from_s, approach, CAR)
+        line, from_s, _ = keep_in_lane(line, from_s, approach, body)
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
+
+    if drive.junction is not None:
+        _check_corner(line, carry(drive.junction[0]), carry(drive.junction[1]), body, p, match.site.id)
 
     events = [replace(e, lo=carry(e.lo), hi=carry(e.hi)) for e in events]
     manoeuvres = tuple(m.carried(carry) for m in drive.manoeuvres)
@@ -86,7 +107,7 @@ def vehicle_route(
     drive.lanes.update(lanes_touched(line, match))
     return Route(
         participant=p,
-        body=CAR,
+        body=body,
         line=line,
         events=events,
         lanes=tuple(sorted(drive.lanes)),
@@ -170,10 +191,47 @@ def _through_junction(
                 f"turns into lane {exit_number} (no connection enters lane {to}), then moves to lane {to}"
             )
             done = settled
+    if own:  # its line follows one of the junction's connections (a U-turn's or a wrong-way line is laid out)
+        drive.junction = (entry, done)
     if move_at is not None:
         drive.stretches[move_at] = (entry, done)
     _along(drive, actions, after, start=done + GAP, side=side)
     return entry, approach
+
+
+def _bike_lane(lane: LaneInfo, road_map: RoadMap) -> LaneInfo | None:
+    """The bike lane beside a road's right-most car lane (SUMO's lane that allows bicycles and no
+    cars, just right of it), when the car lane runs on one edge; None when it has none."""
+    if len(lane.edges) != 1:
+        return None
+    edge = road_map.net.getEdge(lane.edge)
+    beside = next((x for x in edge.getLanes() if x.getIndex() == lane.index - 1), None)
+    if beside is None or not beside.allows("bicycle") or beside.allows("passenger"):
+        return None
+    shape = tuple((float(x), float(y)) for x, y, *_ in beside.getShape())
+    length, speed = round(beside.getLength(), 3), round(beside.getSpeed(), 3)
+    return LaneInfo(beside.getID(), lane.edge, beside.getIndex(), 1, round(beside.getWidth(), 3), length, speed, shape)
+
+
+def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participant, site: str) -> None:
+    """Refuse a junction connection whose line bends tighter than the body can: a bus or truck cannot
+    follow a corner a car takes (its tightest bend is three times as wide), and its planned path,
+    kept to its own radius, would leave the line and the road. Another site may have a wider corner.
+    A connection is drawn (by SUMO) for a car, which takes it as it is: only a body that turns wider
+    than the car's tightest is checked."""
+    tightest = model(body).limits.path_radius
+    if tightest <= PLANNED.path_radius:
+        return
+    inside = (line.s >= lo) & (line.s <= hi)
+    radius = float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
+    if radius < CORNER_SLACK * tightest:
+        raise LoweringError(
+            Diagnostic(
+                f"on {site}, {p.id} ({body.vclass}, {body.length:g} m) cannot take the junction's corner: "
+                f"its line bends at a {radius:.1f} m radius, the body's tightest is {tightest:g} m",
+                p.meta.span,
+            )
+        )
 
 
 def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
@@ -236,9 +294,9 @@ def _u_turn(drive: Drive, arm: Arm, to: Any, site: str, index: int) -> tuple[Pol
     numbers = [min(max(to, 1), count)] if isinstance(to, int) else [count, *range(1, count)]
     end = drive.line.point(drive.line.length)
     lanes = [(n, corridor.own_line(n)) for n in numbers]
-    number, d_to, plan = choose(band, end, lanes, CAR)
+    number, d_to, plan = choose(band, end, lanes, drive.body)
     if not plan.fits:
-        found = kturn.choose(band, end, lanes, CAR)
+        found = kturn.choose(band, end, lanes, drive.body)
         if found is None:
             raise too_narrow(band, f"on {site}, the U-turn from {arm.id}", kturn.MAX_LEGS)
         number, d_to, legs = found

@@ -40,8 +40,8 @@ from sovarc.compiler.lower.route import LEAD, Route
 from sovarc.compiler.vehicles import PLANNED, model
 from sovarc.dsl.ir import ActionKind, CrashType, Role
 
-A_UP = PLANNED.start_accel  # m/s^2, starting from rest (the vehicle model's)
-B_DOWN = PLANNED.stop_decel  # m/s^2, braking to rest
+A_UP = PLANNED.start_accel  # m/s^2, a car starting from rest (each body's own: ramps())
+B_DOWN = PLANNED.stop_decel  # m/s^2, a car braking to rest
 DWELL = 0.5  # s, the least a stop lasts
 NICE_DWELL = 1.5  # s
 V_MIN = {Role.VEHICLE: 1.5, Role.PEDESTRIAN: 0.5}  # m/s while moving
@@ -303,14 +303,20 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
     return motion
 
 
+def ramps(route: Route) -> tuple[float, float]:
+    """The trapezoid's ramps of a route's body: its start from rest and its braking to rest (m/s^2)."""
+    limits = model(route.body).limits
+    return limits.start_accel, limits.stop_decel
+
+
 def _ramps(route: Route, lo: float) -> tuple[float, float]:
-    """The ramps of the leg from arc length `lo`: a car backing along the road eases in and out at its
-    reversing rate. The legs of a turn in legs keep the usual ramps: some are a metre long, too short to
-    reach the least moving speed at that rate."""
+    """The ramps of the leg from arc length `lo`: the body's own (`ramps`); a car backing along the road eases
+    in and out at its reversing rate. The legs of a turn in legs keep the usual ramps: some are a metre long,
+    too short to reach the least moving speed at that rate."""
     if route.backing(lo):
         backing = model(route.body).limits.reverse_accel
         return backing, backing
-    return A_UP, B_DOWN
+    return ramps(route)
 
 
 def _leg_cap(route: Route, j: int, stops: list[Any], reach: float | None) -> float:

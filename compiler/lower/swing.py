@@ -26,7 +26,7 @@ from sovarc.compiler.crashes import LINE_TOLERANCE  # the SUMO oracle's: corners
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.bodies import corner_array
 from sovarc.compiler.geometry.polyline import Polyline
-from sovarc.compiler.vehicles import PLANNED, Body
+from sovarc.compiler.vehicles import Body, model
 
 MARGIN = 0.15  # m kept in hand, for the synthesized path's small departures from the line
 STEP = 0.25  # m between checked front positions
@@ -99,7 +99,8 @@ def keep_in_lane(
     piece = line.sub(lo, min(line.length, approach.stop + max(PAST) + 3.0))
     here = Approach(approach.stop - lo, approach.lanes)
     span = (here.stop - max(AHEAD) - 1.0, here.stop + max(PAST) + 1.0)
-    floor = min(_tightest(piece, *span), PLANNED.path_radius)  # a reshaped bend may be tighter only down to it
+    # a reshaped bend may be tighter only down to the body's tightest
+    floor = min(_tightest(piece, *span), model(body).limits.path_radius)
     ends = {s: _end(piece, s) for s in [here.stop - a for a in AHEAD] + [here.stop + p for p in PAST]}
     best: tuple[float, float, float, float] | None = None
     for ahead, past, reach in itertools.product(AHEAD, PAST, REACH):

@@ -74,7 +74,8 @@ def _trajectory(
         notes.append(f"{pid}: {path.chords} pieces of path tighter than a car turns; planned along the lane line")
     legs = solution.legs.get(pid, ())
     start = solution.starts[pid]
-    profile = knots(legs, start, solution.initial_dwell.get(pid, 0.0), end_time)
+    limits = model(route.body).limits
+    profile = knots(legs, start, solution.initial_dwell.get(pid, 0.0), end_time, limits.plan_accel)
     s, v, fallbacks = sample(profile, times)
     if fallbacks:
         notes.append(f"{pid}: {fallbacks} timing pieces kept constant acceleration (no jerk-limited fit)")
@@ -128,7 +129,7 @@ def _check_drivable(pid: str, path: RoutePath, s: np.ndarray, v: np.ndarray, low
         after = grid[-1] + steps
         points = np.array([path.pose(float(g))[:2] for g in np.concatenate((before, grid, after))])
         limit = max(float(planned.max()) * 1.05, 1.0)
-        ratio = max(ratio, worst_ratio(points, planned, limit, first=len(before)))
+        ratio = max(ratio, worst_ratio(points, planned, limit, len(before), model(path.route.body).limits.plan_accel))
     if ratio > ENVELOPE_SLACK:
         raise SynthesisError(
             Diagnostic(

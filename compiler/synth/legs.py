@@ -14,6 +14,7 @@ import itertools
 import numpy as np
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.synth.paths import Path, plan_path
+from sovarc.compiler.vehicles import model
 
 
 class RoutePath:
@@ -23,12 +24,14 @@ class RoutePath:
         self.route = route
         self.parts: list[tuple[float, float, Path | None]] = []  # (from, to, its Dubins path; None: a turn's legs)
         self.chords = 0
+        radius = model(route.body).limits.path_radius
         cuts = [0.0, *(x for m in route.manoeuvres for x in (m.lo, m.hi)), route.line.length]
         for k, (a, b) in enumerate(itertools.pairwise(cuts)):
             if k % 2:
                 self.parts.append((a, b, None))
             elif b - a > 1e-6:
-                path, chords = plan_path(route.line if not route.manoeuvres else route.line.sub(a, b), vehicle=vehicle)
+                line = route.line if not route.manoeuvres else route.line.sub(a, b)
+                path, chords = plan_path(line, vehicle=vehicle, min_radius=radius)
                 self.parts.append((a, b, path))
                 self.chords += chords
 

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 from sovarc.compiler.vehicles import PLANNED
 
-ACCEL_LIMIT = PLANNED.plan_accel  # m/s^2 per axis: firm braking, and a sharp but possible turn
+ACCEL_LIMIT = PLANNED.plan_accel  # m/s^2 per axis, a car's: firm braking, and a sharp but possible turn
 GRID = 60  # gridpoints along the path
 SAME_POINT = 1e-3  # m; closer points are one (the spline needs increasing arc lengths)
 
@@ -62,6 +62,7 @@ def envelope(
     v_start: float,
     v_end: float,
     within: tuple[float, float] | None = None,
+    accel_limit: float = ACCEL_LIMIT,
 ) -> tuple[np.ndarray, np.ndarray]:
     """(arc lengths, highest drivable speed at each) along the polyline `points` (N x 2), of the
     profiles that start no faster than `v_start` and end no faster than `v_end`, judged between
@@ -73,7 +74,7 @@ def envelope(
     if len(s) < 3 or hi - lo < 1.0:
         return np.array([lo, hi]), np.full(2, speed_limit)
     vlim = np.array([[-speed_limit, speed_limit]] * 2)
-    alim = np.array([[-ACCEL_LIMIT, ACCEL_LIMIT]] * 2)
+    alim = np.array([[-accel_limit, accel_limit]] * 2)
     toppra, window = _toppra()
     constraints = [toppra.constraint.JointVelocityConstraint(vlim), toppra.constraint.JointAccelerationConstraint(alim)]
     grid = np.linspace(lo, hi, GRID)
@@ -88,14 +89,16 @@ def envelope(
     return grid, np.sqrt(np.maximum(top, 0.0))  # NaN stays NaN
 
 
-def worst_ratio(points: np.ndarray, speeds: np.ndarray, speed_limit: float, first: int = 0) -> float:
+def worst_ratio(
+    points: np.ndarray, speeds: np.ndarray, speed_limit: float, first: int = 0, accel_limit: float = ACCEL_LIMIT
+) -> float:
     """The largest planned speed over the envelope's speed along a driven polyline (1.0 = at the limit).
 
     `speeds` are those at points[first : first + len(speeds)]; any points around them are the
     path before and after the driven stretch, which only shape its ends."""
     s = arc_lengths(points)
     driven = s[first : first + len(speeds)]
-    grid, top = envelope(points, speed_limit, float(speeds[0]), float(speeds[-1]), (driven[0], driven[-1]))
+    grid, top = envelope(points, speed_limit, float(speeds[0]), float(speeds[-1]), (driven[0], driven[-1]), accel_limit)
     if np.isnan(top).any():
         return float("inf")
     planned = np.interp(grid, driven, speeds)

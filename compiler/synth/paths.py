@@ -25,7 +25,7 @@ from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.vehicles import PLANNED
 
 WAYPOINT_STEP = 4.0  # m
-MIN_RADIUS = PLANNED.path_radius  # m; a tight junction corner (the vehicle model's)
+MIN_RADIUS = PLANNED.path_radius  # m; a tight junction corner for a car (each body has its own)
 RADIUS_STEP = 1.08  # turning radii come in classes this far apart (a space per class)
 TIGHTER_STEPS = 4  # classes skipped per retry when a curve does not fit
 MAX_RADIUS = 2000.0
@@ -36,7 +36,7 @@ PLANNED_KEPT = 64  # paths kept for lines asked for again
 EXTENSION = 60.0  # m of straight road added past the route's end, so that nobody runs out of path
 
 
-_PLANNED: dict[tuple[bytes, tuple[int, ...], bool], tuple[Path, int]] = {}
+_PLANNED: dict[tuple[bytes, tuple[int, ...], bool, float], tuple[Path, int]] = {}
 
 
 @dataclass
@@ -74,21 +74,22 @@ class Path:
         return x, y, _compass(yaw), scale
 
 
-def plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
+def plan_path(line: Polyline, *, vehicle: bool, min_radius: float = MIN_RADIUS) -> tuple[Path, int]:
     """The path along `line` (extended straight past its end); also the number of chords used.
+    `min_radius`: the tightest bend of the body that drives it (its planned limits').
 
     Kept for the lines last asked for, by their points: the same route on the same site comes
     back for every staging of a scenario and for other scenarios; a Path is only read."""
-    key = (line.points.tobytes(), line.points.shape, vehicle)
+    key = (line.points.tobytes(), line.points.shape, vehicle, min_radius)
     found = _PLANNED.get(key)
     if found is None:
-        found = _PLANNED[key] = _plan_path(line, vehicle=vehicle)
+        found = _PLANNED[key] = _plan_path(line, vehicle=vehicle, min_radius=min_radius)
         while len(_PLANNED) > PLANNED_KEPT:
             del _PLANNED[next(iter(_PLANNED))]
     return found
 
 
-def _plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
+def _plan_path(line: Polyline, *, vehicle: bool, min_radius: float) -> tuple[Path, int]:
     end = line.point(line.length)
     heading = line.heading(line.length)
     rad = math.radians(heading)
@@ -111,7 +112,7 @@ def _plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     made: dict[tuple[float, bool], tuple[ob.DubinsStateSpace, ob.SpaceInformation]] = {}
     for k in range(count - 1):
         found = None
-        for n, radius in enumerate(_radius_classes(0.9 * min(local[k], local[k + 1]))):
+        for n, radius in enumerate(_radius_classes(0.9 * min(local[k], local[k + 1]), min_radius)):
             key = (radius, n == 0)
             if key not in made:
                 made[key] = _space(radius, box, checkers[n == 0])
@@ -128,28 +129,28 @@ def _plan_path(line: Polyline, *, vehicle: bool) -> tuple[Path, int]:
     return Path(at, states, lengths, spaces), chords
 
 
-def _radius_class(radius: float) -> float:
-    if radius <= MIN_RADIUS:
-        return MIN_RADIUS
-    steps = math.floor(math.log(min(radius, MAX_RADIUS) / MIN_RADIUS, RADIUS_STEP))
-    return round(MIN_RADIUS * RADIUS_STEP**steps, 6)
+def _radius_class(radius: float, floor: float = MIN_RADIUS) -> float:
+    if radius <= floor:
+        return floor
+    steps = math.floor(math.log(min(radius, MAX_RADIUS) / floor, RADIUS_STEP))
+    return round(floor * RADIUS_STEP**steps, 6)
 
 
-def _radius_classes(radius: float) -> list[float]:
-    """The class of `radius`, then tighter ones down to MIN_RADIUS (a few classes apart).
+def _radius_classes(radius: float, floor: float = MIN_RADIUS) -> list[float]:
+    """The class of `radius`, then tighter ones down to `floor`, the body's tightest (a few classes apart).
 
     The local radius is measured over a window; where the waypoints' headings ask for a
     sharper bend than it, a tighter curve still beats a chord, whose kink no car can drive.
     """
-    return _classes_from(_radius_class(radius))
+    return _classes_from(_radius_class(radius, floor), floor)
 
 
 @functools.cache
-def _classes_from(first: float) -> list[float]:
+def _classes_from(first: float, floor: float) -> list[float]:
     """The classes tried from `first` on (a few dozen firsts exist): made once each."""
     out = [first]
-    while out[-1] > MIN_RADIUS:
-        out.append(_radius_class(out[-1] / RADIUS_STEP**TIGHTER_STEPS))
+    while out[-1] > floor:
+        out.append(_radius_class(out[-1] / RADIUS_STEP**TIGHTER_STEPS, floor))
     return out
 
 

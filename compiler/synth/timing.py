@@ -18,7 +18,7 @@ from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 from sovarc.compiler.lower.solve import LegValues
 from sovarc.compiler.vehicles import PLANNED
 
-MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a piece (the trapezoid's ramps use A_UP, B_DOWN)
+MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a car's piece (the trapezoid's ramps use A_UP, B_DOWN)
 MAX_JERK = 12.0  # m/s^3
 RAMP_SLACK = 1.05  # of a reverse leg's ramp rate, the most Ruckig may use on it
 
@@ -31,8 +31,11 @@ class Knot:
     accel: float = MAX_ACCEL  # m/s^2 the piece that reaches it may use (a reverse leg's: its ramps')
 
 
-def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_time: float) -> list[Knot]:
-    """The corners of the trapezoid profile, from t = 0 to end_time."""
+def knots(
+    legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_time: float, max_accel: float = MAX_ACCEL
+) -> list[Knot]:
+    """The corners of the trapezoid profile, from t = 0 to end_time. Each leg ramps as the solver planned it
+    (the body's own rates, or its reversing rate); `max_accel` is the most Ruckig may use, the body's."""
     if not legs:  # stationary throughout
         return [Knot(0.0, start, 0.0), Knot(end_time, start, 0.0)]
     first = legs[0]
@@ -42,7 +45,7 @@ def knots(legs: tuple[LegValues, ...], start: float, initial_dwell: float, end_t
     for leg in legs:
         t, s, v = leg.begin, leg.start, leg.v
         # Ruckig keeps a little above the ramps' own rate on a reverse leg (its jerk limit needs it)
-        a = min(MAX_ACCEL, RAMP_SLACK * max(leg.up, leg.down)) if leg.backing else MAX_ACCEL
+        a = min(max_accel, RAMP_SLACK * max(leg.up, leg.down)) if leg.backing else max_accel
         if leg.from_rest:
             t, s = t + v / leg.up, s + v * v / (2 * leg.up)
             out.append(Knot(t, s, v, a))
@@ -75,7 +78,8 @@ def _merged(points: list[Knot]) -> list[Knot]:
 
 
 def sample(points: list[Knot], times: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
-    """Arc length and speed at each time; also how many pieces kept constant acceleration."""
+    """Arc length and speed at each time; also how many pieces kept constant acceleration
+    (each piece may accelerate at most as its end knot says: the body's, or a reverse leg's)."""
     s_out = np.empty(len(times))
     v_out = np.empty(len(times))
     fallbacks = 0

@@ -67,8 +67,7 @@ class World:
         sumo.vehicletype.setLength(vtype, body.length)
         sumo.vehicletype.setWidth(vtype, body.width)
         sumo.vehicletype.setMinGap(vtype, 0.0)
-        if body.vclass == "pedestrian":
-            sumo.vehicletype.setShapeClass(vtype, "pedestrian")
+        sumo.vehicletype.setShapeClass(vtype, body.gui_shape)  # drawn as its kind (a bus, a cyclist)
         sumo.vehicle.add(actor, self._route, typeID=vtype, depart="now", departSpeed="0")
         sumo.vehicle.setSpeedMode(actor, 0)
         self.move(actor, x, y, heading)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from lxml import etree
 from sovarc.compiler.plan import Plan, Trajectory
+from sovarc.compiler.vehicles import CAR_MODEL, model
 from sovarc.dsl.ir import Participant, Unknown
 from sovarc.targets.openscenario.bodies import OscBody
 from sovarc.targets.openscenario.versions import Dialect
@@ -108,10 +109,11 @@ def _scenario_object(plan: Plan, actor: Actor, dialect: Dialect) -> etree._Eleme
         attrs = {"name": actor.name, "vehicleCategory": body.category}
         if dialect.rev_minor >= 1:
             attrs["mass"] = num(body.mass)
+        accel, decel = performance_limits(actor.trajectory)
         performance = {
             "maxSpeed": num(allowed_speed(plan, actor)),
-            "maxAcceleration": num(MAX_ACCELERATION),
-            "maxDeceleration": num(MAX_DECELERATION),
+            "maxAcceleration": num(accel),
+            "maxDeceleration": num(decel),
         }
         entity = el(
             "Vehicle",
@@ -122,6 +124,15 @@ def _scenario_object(plan: Plan, actor: Actor, dialect: Dialect) -> etree._Eleme
             _properties(plan, actor),
         )
     return el("ScenarioObject", {"name": actor.name}, entity)
+
+
+def performance_limits(trajectory: Trajectory) -> tuple[float, float]:
+    """A vehicle's maxAcceleration and maxDeceleration (m/s^2): a car's as they always were; another
+    kind's the most it can do or is planned to (a bus's plan may ask more than it drives with)."""
+    kind = model(trajectory.body)
+    if kind is CAR_MODEL:
+        return MAX_ACCELERATION, MAX_DECELERATION
+    return max(kind.drive_accel, kind.limits.plan_accel), max(kind.drive_brake, kind.limits.plan_accel)
 
 
 def _axles(body: OscBody) -> etree._Element:

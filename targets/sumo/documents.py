@@ -17,6 +17,7 @@ import hashlib
 from collections.abc import Sequence
 
 from sovarc.compiler.plan import Plan, Trajectory
+from sovarc.compiler.vehicles import CAR_MODEL, model
 from sovarc.dsl import to_text
 from sovarc.dsl.ir import Unknown
 from sovarc.targets.sumo.network import Network, Spot
@@ -76,8 +77,9 @@ def _types(plan: Plan) -> list[str]:
             ("length", num(t.body.length, 2)),
             ("width", num(t.body.width, 2)),
             ("minGap", "0.50" if is_person(t) else "2.50"),
+            *_drive(t),
             ("speedDev", "0"),
-            ("guiShape", "pedestrian" if is_person(t) else "passenger"),
+            ("guiShape", t.body.gui_shape),
             ("color", COLOURS[role]),
         ]
         facts = [
@@ -90,6 +92,20 @@ def _types(plan: Plan) -> list[str]:
         if t.edges and not is_person(t):
             children.append(empty("route", (("id", f"{t.participant}.route"), ("edges", " ".join(t.edges))), 4))
     return children
+
+
+def _drive(t: Trajectory) -> list[tuple[str, str]]:
+    """A kind's own acceleration and braking. The car's (and a walker's) type keeps SUMO's defaults,
+    as it always had: the replay places every body on its samples, so these only tell a reader (and
+    SUMO's own model, were it to drive the vehicle) what the kind can do."""
+    kind = model(t.body)
+    if is_person(t) or kind is CAR_MODEL:
+        return []
+    return [
+        ("accel", num(kind.drive_accel, 2)),
+        ("decel", num(kind.limits.stop_decel, 2)),
+        ("emergencyDecel", num(kind.drive_brake, 2)),
+    ]
 
 
 def _words(value: object) -> str:

@@ -53,6 +53,13 @@ KNOWN_GAPS = frozenset(
 )
 
 
+# Examples whose bus or truck cannot take the tightest junction corner among the three town sites
+# `lower(roads=3)` picks: lowering refuses a line that bends under the body's 9 m, and a corner just
+# over it leaves the speed synthesis plans above what the body's own path allows there (TOPP-RA).
+# The CLI's spare sites stage them on three others (tests/targets/test_kinds.py); this test takes none.
+TOO_TIGHT_FOR_HEAVY = frozenset({"intersection_bus_left_turn_cyclist_side", "intersection_truck_left_turn_side"})
+
+
 @pytest.mark.parametrize("name", NAMES)
 def test_example_stages_on_three_town_sites(name: str) -> None:
     result = staged(name)
@@ -62,8 +69,10 @@ def test_example_stages_on_three_town_sites(name: str) -> None:
         failed = [f"{s.lowered.match.site.id}: {s.error}" for s in result if s.error is not None]
         if len({s.lowered.match.site.id for s in result}) != ROADS:
             failed.append(f"fewer than {ROADS} sites")
-    if name in KNOWN_GAPS:
-        assert failed, f"{name} now stages on {ROADS} sites: remove it from KNOWN_GAPS"
+    if name in KNOWN_GAPS | TOO_TIGHT_FOR_HEAVY:
+        assert failed, f"{name} now stages on {ROADS} sites: remove it from its list of gaps"
+        if name in TOO_TIGHT_FOR_HEAVY:
+            assert any("corner" in f or "TOPP-RA" in f for f in failed), failed
     else:
         assert not failed, "\n".join(failed)
 

@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.plan import Impact, Network, Plan, Sample, Segment, Trajectory
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import CAR, Body
 from sovarc.dsl import parse
 from sovarc.dsl.ir import CrashType, RoadKind, Role
 
@@ -25,9 +25,16 @@ Profile = Callable[[float], float]
 
 
 def eastbound(
-    name: str, x0: float, lane: int, speed: Profile, duration: float, lateral: Profile | None = None
+    name: str,
+    x0: float,
+    lane: int,
+    speed: Profile,
+    duration: float,
+    lateral: Profile | None = None,
+    body: Body = CAR,
 ) -> Trajectory:
-    """A car driving east on ave2 from x0 in a lane, at speed(t); lateral(t) moves it left (+y) by metres."""
+    """A car (or another `body`) driving east on ave2 from x0 in a lane, at speed(t); lateral(t) moves it
+    left (+y) by metres."""
     times = np.arange(0.0, duration + 1e-9, STEP)
     xs = x0 + np.concatenate(([0.0], np.cumsum([speed(t) * STEP for t in times[:-1]])))
     ys = np.array([LANE_Y[lane] + (lateral(t) if lateral else 0.0) for t in times])
@@ -40,7 +47,7 @@ def eastbound(
     last = lane + round((lateral(duration) if lateral else 0.0) / 3.3)
     lanes = tuple(f"ave2_{k}" for k in sorted({lane, last}))
     segment = Segment("follow_lane", 0.0, float(xs[-1] - x0), 0.0, duration, speed(0.0))
-    return Trajectory(name, Role.VEHICLE, CAR, tuple(samples), lanes, ("ave2",), (segment,), None)
+    return Trajectory(name, Role.VEHICLE, body, tuple(samples), lanes, ("ave2",), (segment,), None)
 
 
 def smooth_step(start: float, end: float, height: float) -> Profile:
@@ -137,3 +144,11 @@ def stopped_ahead(duration: float = 10.0) -> Plan:
     standing = eastbound("V2", 80.0, 1, lambda t: 0.0, duration)
     braking = eastbound("V1", 20.0, 1, lambda t: max(0.0, 12.0 - 1.5 * t), duration)
     return plan_of(braking, standing)
+
+
+def slow_ahead(body: Body, duration: float = 14.0) -> Plan:
+    """V2, of `body`, rides at 4 m/s from x = 80 in lane 2 (a cyclist's pace); V1 comes at 12 m/s and
+    runs into it (the reported crash) after about 7 s."""
+    ahead = eastbound("V2", 80.0, 1, lambda t: 4.0, duration, body=body)
+    behind = eastbound("V1", 20.0, 1, lambda t: 12.0, duration)
+    return plan_of(behind, ahead)

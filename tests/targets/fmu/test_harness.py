@@ -7,10 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sovarc.compiler.vehicles import MODELS
 from sovarc.targets.fmu import EgoFmu, FmuInterfaceError, run_target, run_test_results, run_tests
 
 from tests.targets.fmu.fake_fmu import write_fmu
-from tests.targets.fmu.plans import car_following, crossing, cut_in, stopped_ahead
+from tests.targets.fmu.plans import car_following, crossing, cut_in, slow_ahead, stopped_ahead
 
 pytestmark = pytest.mark.slow  # runs SUMO and an FMU
 
@@ -78,3 +79,13 @@ def test_a_participant_that_never_moved_holds_and_one_behind_it_waits_without_fa
     assert follower.passed, follower.dumps()
     assert follower.facts["ended"] == "budget" and follower.facts["blocked_by"] == "V2"
     assert "held up by V2" in next(f for f in follower.findings if f.check == "goal").message
+
+
+@pytest.mark.parametrize("kind", ["van", "pickup", "bus", "truck", "motorcycle", "bicycle"])
+def test_the_reference_ego_sees_every_kind_ahead_and_keeps_behind_it(kind: str, reference: EgoFmu) -> None:
+    """A slow road user of each kind ahead in the ego's lane, drawn with its own body, which the plan
+    runs into: the ego must see it (a narrow cyclist or motorcycle as surely as a bus) and wait behind."""
+    verdict = _by_ego(run_tests(slow_ahead(MODELS[kind].body), reference))["V1"]
+    assert verdict.passed, verdict.dumps()
+    assert verdict.facts["ended"] == "budget" and verdict.facts["blocked_by"] == "V2"
+    assert verdict.facts["peak_braking"] > 1.0  # it slowed for it: the plan's own speed never drops
