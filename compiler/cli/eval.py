@@ -9,28 +9,24 @@ import argparse
 import hashlib
 import json
 import sys
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.batch.executors import run_all
 from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.cli.batch import executor_of
-from sovarc.compiler.cli.common import Reporter, UsageError, make_front_end
+from sovarc.compiler.cli.common import UsageError, resolve_llm
 from sovarc.compiler.evaluation import sgo
-from sovarc.compiler.evaluation.extraction import evaluate_extraction
+from sovarc.compiler.evaluation.extraction import Report, extraction_tasks, run_extraction_task
+from sovarc.compiler.evaluation.reading import FrontEndSpec
 from sovarc.compiler.evaluation.srr import SrrTask, map_key, run_srr_task, sov_files, srr_table
 from sovarc.compiler.evaluation.tests import TestsTable, TestsTask, load_ego, merged, run_tests_task, scenario_files
-from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.pipeline import default_map
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import folder_name
 from sovarc.dsl import verify_or_raise
 from sovarc.dsl.errors import EXIT_INPUT, EXIT_OK
-from sovarc.dsl.ir import Scenario
-from sovarc.dsl.span import Source
-from tqdm import tqdm
 
 
 def cmd_eval(args: argparse.Namespace) -> int:
@@ -50,15 +46,19 @@ def cmd_eval_extraction(args: argparse.Namespace) -> int:
     truths = sorted(Path(args.truth).glob("*/*.json"))
     if not truths:
         raise UsageError(f"no ground truth found: expected {args.truth}/<category>/<n>.json")
-    reporter = Reporter()
-    front_end = make_front_end(args)
-    report = evaluate_extraction(
-        tqdm(truths, desc="eval extraction", unit="report", disable=None),
-        Path(args.reports),
-        front_end,
-        on_error=lambda path, exc: reporter.error(exc, None, str(path)),
-    )
-    front_end.close()
+    failed = False
+    report = Report()
+    executor = executor_of(args)
+    try:
+        tasks = extraction_tasks(truths, Path(args.reports), _spec(args))
+        for name, scores, error in run_all(executor, run_extraction_task, tasks, "eval extraction"):
+            if error is not None:
+                print(error, file=sys.stderr)
+                failed = True
+            else:
+                report.cases[name] = scores
+    finally:
+        executor.close()
     if args.json:
         print(json.dumps(report.to_json(), indent=2, ensure_ascii=False))
     else:
@@ -69,7 +69,13 @@ def cmd_eval_extraction(args: argparse.Namespace) -> int:
             print(f"\n{len(failures)} failing fields:")
             for case, attribute, why in failures:
                 print(f"  {case:<14} {attribute:<18} {why}")
-    return EXIT_INPUT if reporter.failed else EXIT_OK
+    return EXIT_INPUT if failed else EXIT_OK
+
+
+def _spec(args: argparse.Namespace) -> FrontEndSpec:
+    """The front end the --llm options name, as plain data for the executor's workers (see `reading`)."""
+    llm = resolve_llm(args)
+    return FrontEndSpec(llm, str(args.model) if args.model else None, args.llm_base_url)
 
 
 def cmd_eval_sgo(args: argparse.Namespace) -> int:
@@ -83,15 +89,15 @@ def cmd_eval_sgo(args: argparse.Namespace) -> int:
     if args.sample is not None:  # a slow front end reads a sample of the held-out half only
         by_hash = sorted(halves["held-out"], key=lambda r: hashlib.sha256(r["Report ID"].encode()).hexdigest())
         halves = {"held-out": by_hash[: args.sample]}
-    front_end = make_front_end(args)
-
-    def read(front: FrontEnd) -> Callable[[str, str], Scenario]:
-        return lambda report_id, text: front.extract(Source(f"sgo_{report_id}.txt", text)).scenario
-
+    spec = _spec(args)
     scores = {}
-    for name, rows in halves.items():
-        scores[name] = sgo.score_rows(tqdm(rows, desc=f"sgo {name}", unit="report", disable=None), read(front_end))
-    front_end.close()
+    executor = executor_of(args)
+    try:
+        for name, rows in halves.items():
+            tasks = [sgo.SgoTask(spec, row["Report ID"], row["Narrative"]) for row in rows]
+            scores[name] = sgo.score_rows(rows, run_all(executor, sgo.run_sgo_task, tasks, f"sgo {name}"))
+    finally:
+        executor.close()
     if args.json:
         print(json.dumps(sgo.to_json(scores), indent=2, ensure_ascii=False))
         return EXIT_OK

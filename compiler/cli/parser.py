@@ -310,6 +310,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     exv.add_argument("--json", action="store_true", help="print the figures and failures as JSON")
     add_llm_options(exv)
+    add_executor_options(exv)
     _add_srr_parser(which, _formatter)
     _add_tests_parser(which, _formatter)
     return parser

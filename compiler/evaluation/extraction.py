@@ -20,6 +20,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from sovarc.compiler.evaluation.reading import FrontEndSpec, front_end
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import SovarcError, read_source
@@ -176,7 +177,7 @@ class Report:
 def evaluate_extraction(
     truths: Iterable[Path],
     reports: Path,
-    front_end: FrontEnd,
+    reader: FrontEnd,
     on_error: Callable[[Path, SovarcError], None],
 ) -> Report:
     """Extract the report beside each ground truth (reports/<category>/<n>.txt for truth/<category>/<n>.json)
@@ -186,9 +187,33 @@ def evaluate_extraction(
         text = reports / path.parent.name / f"{path.stem}.txt"
         try:
             truth = import_truth_file(path).scenario
-            got = front_end.extract(read_source(text, "crash report")).scenario
+            got = reader.extract(read_source(text, "crash report")).scenario
         except SovarcError as exc:
             on_error(path, exc)
             continue
         report.add(truth.name, got, truth)
     return report
+
+
+@dataclass(frozen=True)
+class ExtractionTask:
+    """One report and its ground truth, for an executor (plain data: see `reading`)."""
+
+    spec: FrontEndSpec
+    truth: str
+    report: str
+
+
+def extraction_tasks(truths: Iterable[Path], reports: Path, spec: FrontEndSpec) -> list[ExtractionTask]:
+    """A task per ground truth: the report beside it is reports/<category>/<n>.txt."""
+    return [ExtractionTask(spec, str(path), str(reports / path.parent.name / f"{path.stem}.txt")) for path in truths]
+
+
+def run_extraction_task(task: ExtractionTask) -> tuple[str, dict[str, tuple[bool, str]] | None, str | None]:
+    """(the case's name, its scores per attribute, or the error as a person reads it)."""
+    try:
+        truth = import_truth_file(Path(task.truth)).scenario
+        got = front_end(task.spec).extract(read_source(Path(task.report), "crash report")).scenario
+    except SovarcError as exc:
+        return Path(task.truth).stem, None, exc.render()
+    return truth.name, score_case(got, truth), None

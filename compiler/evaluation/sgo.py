@@ -41,8 +41,10 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from sovarc.compiler.evaluation.reading import FrontEndSpec, front_end
 from sovarc.compiler.frontend.refusals import says_impact
 from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Participant, Scenario, Speed, Unknown, VehicleKind, Weather
+from sovarc.dsl.span import Source
 
 # Crash partners the IR holds as road users, so the crash has two parties.
 TWO_PARTY = frozenset(
@@ -327,14 +329,15 @@ class HalfScore:
         """Refusals of narratives that say no impact at all."""
         return self.silent
 
-    def add(self, report_id: str, row: dict[str, str], got: Scenario | None, refusal: str = "") -> None:
+    def add(self, report_id: str, row: dict[str, str], got: Reading) -> None:
         self.reports += 1
-        if got is None:
-            self.refusals.append((report_id, refusal))
+        if isinstance(got, str):
+            self.refusals.append((report_id, got))
+            self.silent += not says_impact(row["Narrative"])
             return
+        facts, people = got
         self.extracted += 1
-        self.two_parties += len(got.participants) == 2
-        facts = read_facts(got)
+        self.two_parties += people == 2
         for attribute, want in expected(row).items():
             tally = self.tallies[attribute]
             if want.skip == NOT_EXPRESSIBLE:
@@ -356,16 +359,40 @@ def _show(value: object) -> str:
     return str(value)
 
 
-def score_rows(rows: Iterable[dict[str, str]], read: Callable[[str, str], Scenario]) -> HalfScore:
-    """Score `read(report_id, narrative) -> Scenario` (raising on a refusal) on each row."""
-    score = HalfScore()
-    for row in rows:
+# What a front end made of one narrative: the facts `expected` compares and how many participants it
+# found, or why it refused (plain data, so it comes back from an executor's worker).
+Reading = tuple[dict[str, object], int] | str
+
+
+@dataclass(frozen=True)
+class SgoTask:
+    spec: FrontEndSpec
+    report_id: str
+    narrative: str
+
+
+def run_sgo_task(task: SgoTask) -> Reading:
+    """One narrative read by the task's front end (see `reading`)."""
+    return read_row(lambda text: front_end(task.spec).extract(Source(f"sgo_{task.report_id}.txt", text)).scenario)(
+        task.narrative
+    )
+
+
+def read_row(read: Callable[[str], Scenario]) -> Callable[[str], Reading]:
+    def reading(narrative: str) -> Reading:
         try:
-            got = read(row["Report ID"], row["Narrative"])
+            got = read(narrative)
         except Exception as exc:  # a refusal or an internal error: both count as not extracted, with the reason
-            score.add(row["Report ID"], row, None, f"{type(exc).__name__}: {exc}")
-            score.silent += not says_impact(row["Narrative"])
-            continue
+            return f"{type(exc).__name__}: {exc}"
+        return read_facts(got), len(got.participants)
+
+    return reading
+
+
+def score_rows(rows: Iterable[dict[str, str]], readings: Iterable[Reading]) -> HalfScore:
+    """Score each row's reading (in the rows' order)."""
+    score = HalfScore()
+    for row, got in zip(rows, readings, strict=True):
         score.add(row["Report ID"], row, got)
     return score
 

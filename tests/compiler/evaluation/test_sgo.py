@@ -121,8 +121,11 @@ def test_eval_sgo_scores_both_halves(tmp_path: Path, capsys: pytest.CaptureFixtu
     rows = [contact(("Rear",), ("Front",), **coded, **{"Report ID": i}) for i in ids]
     rows.append(row(**{"Report ID": "2-1", "Narrative": "x" * 120, "Crash With": "Animal"}))  # not two-party
     path = write_csv(tmp_path / "sgo.csv", rows)
-    assert main(["eval", "extraction", "--format", "sgo", str(path), "--llm", "none", "--json"]) == 0
-    got = json.loads(capsys.readouterr().out)
+    assert main(["eval", "extraction", "--format", "sgo", str(path), "--llm", "none", "--json", "-j", "1"]) == 0
+    text = capsys.readouterr().out
+    assert main(["eval", "extraction", "--format", "sgo", str(path), "--llm", "none", "--json", "-j", "2"]) == 0
+    assert capsys.readouterr().out == text  # the same figures from a pool of two workers
+    got = json.loads(text)
     assert sum(h["reports"] for h in got.values()) == len(ids)
     for half in got.values():
         attrs = half["attributes"]
