@@ -147,12 +147,16 @@ def _sha256_form(s: Scenario) -> Iterator[Diagnostic]:
         yield Diagnostic("sha256 must be 64 lower-case hex digits", p.meta.where("sha256"))
 
 
+def _fact_nodes(s: Scenario) -> dict[str, object]:
+    """The nodes a fact's path starts from: the sections by name, the participants by id."""
+    return {"road": s.road, "environment": s.environment, "crash": s.crash, **{q.id: q for q in s.participants}}
+
+
 def _assumed_paths(s: Scenario) -> Iterator[Diagnostic]:
     p = s.provenance
     if p is None:
         return
-    nodes = {"road": s.road, "environment": s.environment, "crash": s.crash}
-    nodes.update({q.id: q for q in s.participants})
+    nodes = _fact_nodes(s)
     for path in p.assumed:
         head, _, rest = path.partition(".")
         node = nodes.get(head)
@@ -166,8 +170,7 @@ def _evidence_paths(s: Scenario) -> Iterator[Diagnostic]:
     p = s.provenance
     if p is None:
         return
-    nodes = {"road": s.road, "environment": s.environment, "crash": s.crash}
-    nodes.update({q.id: q for q in s.participants})
+    nodes = _fact_nodes(s)
     for e in p.evidence:
         m = FACT_PATH.fullmatch(e.fact)
         node = nodes.get(m["head"]) if m else None

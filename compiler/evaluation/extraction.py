@@ -21,7 +21,6 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from sovarc.compiler.evaluation.reading import FrontEndSpec, front_end
-from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import SovarcError, read_source
 from sovarc.dsl.ir import ActionKind, Lighting, Participant, Scenario, Speed, Unknown
@@ -172,27 +171,6 @@ class Report:
         rows = [head, ours, paper]
         widths = [max(len(r[i]) for r in rows) for i in range(len(head))]
         return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows)
-
-
-def evaluate_extraction(
-    truths: Iterable[Path],
-    reports: Path,
-    reader: FrontEnd,
-    on_error: Callable[[Path, SovarcError], None],
-) -> Report:
-    """Extract the report beside each ground truth (reports/<category>/<n>.txt for truth/<category>/<n>.json)
-    and score it; a truth or report that cannot be read goes to `on_error`, and the batch goes on."""
-    report = Report()
-    for path in truths:
-        text = reports / path.parent.name / f"{path.stem}.txt"
-        try:
-            truth = import_truth_file(path).scenario
-            got = reader.extract(read_source(text, "crash report")).scenario
-        except SovarcError as exc:
-            on_error(path, exc)
-            continue
-        report.add(truth.name, got, truth)
-    return report
 
 
 @dataclass(frozen=True)

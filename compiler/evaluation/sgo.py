@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import csv
 import hashlib
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -373,20 +373,11 @@ class SgoTask:
 
 def run_sgo_task(task: SgoTask) -> Reading:
     """One narrative read by the task's front end (see `reading`)."""
-    return read_row(lambda text: front_end(task.spec).extract(Source(f"sgo_{task.report_id}.txt", text)).scenario)(
-        task.narrative
-    )
-
-
-def read_row(read: Callable[[str], Scenario]) -> Callable[[str], Reading]:
-    def reading(narrative: str) -> Reading:
-        try:
-            got = read(narrative)
-        except Exception as exc:  # a refusal or an internal error: both count as not extracted, with the reason
-            return f"{type(exc).__name__}: {exc}"
-        return read_facts(got), len(got.participants)
-
-    return reading
+    try:
+        got = front_end(task.spec).extract(Source(f"sgo_{task.report_id}.txt", task.narrative)).scenario
+    except Exception as exc:  # a refusal or an internal error: both count as not extracted, with the reason
+        return f"{type(exc).__name__}: {exc}"
+    return read_facts(got), len(got.participants)
 
 
 def score_rows(rows: Iterable[dict[str, str]], readings: Iterable[Reading]) -> HalfScore:

@@ -58,11 +58,11 @@ def kind_named(words: str) -> tuple[VehicleKind, int, int] | None:
     return kind, start, end
 
 
-def stated_kinds(named: str, words: dict[str, str]) -> dict[str, tuple[VehicleKind, int, int] | VehicleKind]:
-    """Each vehicle's kind: from an appositive in the named text (with the span of its noun there), else from
-    the words it was first named by (`words`, from `names.parties`; no span in the named text, where those
-    words were replaced by its number)."""
-    kinds: dict[str, tuple[VehicleKind, int, int] | VehicleKind] = {}
+def stated_kinds(named: str, words: dict[str, str]) -> dict[str, tuple[VehicleKind, tuple[int, int] | None]]:
+    """Each vehicle's kind and the span of its noun in the named text: from an appositive there, else from
+    the words it was first named by (`words`, from `names.parties`; no span, as the named text has its number
+    where those words were)."""
+    kinds: dict[str, tuple[VehicleKind, tuple[int, int] | None]] = {}
     for m in _APPOSITIVE.finditer(named):
         pid = m.group(1)
         rest = named[m.end() :]
@@ -72,8 +72,8 @@ def stated_kinds(named: str, words: dict[str, str]) -> dict[str, tuple[VehicleKi
             continue
         kind, start, end = found
         offset = m.end() + rest.index(phrase)
-        kinds[pid] = (kind, offset + start, offset + end)
+        kinds[pid] = (kind, (offset + start, offset + end))
     for pid, said in words.items():
         if pid.startswith("V") and pid not in kinds and (found := kind_named(said)) is not None:
-            kinds[pid] = found[0]
+            kinds[pid] = (found[0], None)
     return kinds

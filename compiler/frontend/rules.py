@@ -496,18 +496,13 @@ def _with_kinds(people: list[Participant], text: str, named: str, spots: list[Sp
     kinds = stated_kinds(named, parties(number_vehicles(text))[2])
     out = []
     for p in people:
-        stated = kinds.get(p.id)
-        if p.role is not Role.VEHICLE or stated is None:
+        kind, span = kinds.get(p.id, (None, None))
+        first = re.search(rf"\b{p.id}\b", named)
+        span = span or (first.span() if first else None)
+        if p.role is not Role.VEHICLE or kind is None or span is None:
             out.append(p)
             continue
-        if isinstance(stated, tuple):
-            kind, start, end = stated
-        elif first := re.search(rf"\b{p.id}\b", named):
-            kind, (start, end) = stated, first.span()
-        else:
-            out.append(p)
-            continue
-        spots.append((f"{p.id}.kind", "named", start, end))
+        spots.append((f"{p.id}.kind", "named", *span))
         out.append(replace(p, kind=kind))
     return out
 

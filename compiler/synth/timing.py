@@ -18,7 +18,7 @@ from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 from sovarc.compiler.lower.solve import LegValues
 from sovarc.compiler.vehicles import PLANNED
 
-MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a car's piece (the trapezoid's ramps use A_UP, B_DOWN)
+MAX_ACCEL = PLANNED.plan_accel  # m/s^2 Ruckig may use inside a car's piece (the legs' own ramps shape the trapezoid)
 MAX_JERK = 12.0  # m/s^3
 RAMP_SLACK = 1.05  # of a reverse leg's ramp rate, the most Ruckig may use on it
 
