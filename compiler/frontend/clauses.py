@@ -17,8 +17,10 @@ from dataclasses import dataclass
 
 # Words right before a participant's name that make it an object, not the subject of what follows.
 _OBJECT_BEFORE = re.compile(
-    r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|toward|towards|into|past|struck|hit|impacted|contacted|"
-    r"striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|pass|passed|passing|"
+    # (a preposition's object: "parked perpendicular to V1", "away from V1")
+    r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|to|from|toward|towards|into|onto|past|near|against|"
+    r"struck|hit|impacted|contacted|striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|"
+    r"detected|detecting|pass|passed|passing|"
     r"followed|following|around|alongside|beside|next to|approached|approaching|overtook|overtaking)|'s) "
     r"(?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
     re.IGNORECASE,

@@ -453,6 +453,9 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     people = _with_kinds(people, text, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
+    if crash_at >= 0 and (backers := _backing(people)):
+        # read again knowing who backed: its rear is the end it moved with (see `crash.read_sentence`)
+        crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
     environment, found = read_environment(named)
@@ -474,6 +477,11 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     return keep_stated(scenario)
 
 
+def _backing(people: list[Participant]) -> frozenset[str]:
+    """The vehicles backing at the impact: their last action is the reverse."""
+    return frozenset(p.id for p in people if p.known_actions and p.known_actions[-1].kind is ActionKind.REVERSE)
+
+
 def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     """A vehicle backing into the impact leads with its rear. The crash readers take a front for the striking
     face, so "the rear of V2 struck the front of V1" reads as V1's front into V2's rear: the faces of a rear-end
@@ -481,11 +489,8 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     if crash.type is not CrashType.REAR_END or not isinstance(crash.striker, str) or not isinstance(crash.victim, str):
         return crash
 
-    def backing(pid: str) -> bool:
-        q = next((p for p in people if p.id == pid), None)
-        return q is not None and bool(q.known_actions) and q.known_actions[-1].kind is ActionKind.REVERSE
-
-    if backing(crash.victim) and not backing(crash.striker):
+    backers = _backing(people)
+    if crash.victim in backers and crash.striker not in backers:
         return replace(crash, striker=crash.victim, victim=crash.striker)
     return crash
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.choice import FrontEndError
+from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import label_parties
 from sovarc.compiler.frontend.sentences import sentences
 
@@ -21,12 +22,14 @@ _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
-    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended)\b",
+    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended"
+    r"|" + MOVED_INTO + r")\b",
     re.IGNORECASE,
 )
-# An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle".
+# An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle"; one
+# that could not be avoided is one ("was unable to avoid contact with V2").
 _NO_IMPACT = re.compile(
-    r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
+    r"\b(?<!unable to )(?<!failed to )(?<!not )(?<!n't )(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:collision|impact|contact|crash|striking|hitting)\b"
     r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
     r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b",  # what held then, not the meeting
