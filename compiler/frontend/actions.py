@@ -58,7 +58,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
     (
         ActionKind.CHANGE_LANE,
-        re.compile(r"\bchang(?:e|ed|es|ing) lanes?\b|\blane change\b|\bmerg(?:e|ed|es|ing)\b", re.I),
+        re.compile(r"\b(?:chang|switch)(?:e|ed|es|ing)? lanes?\b|\blane[- ]chang\w*|\bmerg(?:e|ed|es|ing)\b", re.I),
     ),
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,
@@ -143,7 +143,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
             r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
-            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b",
+            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
+            r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
             re.I,
         ),
     ),
@@ -425,7 +427,9 @@ def read_actions_at(
 ) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
-    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known,
+    # (a piece in which any action is read describes it: "V2 behind it was switching lanes")
+    shown = any(_DESCRIBED.search(p.text) or any(x.search(what_was_done(p.text)) for _, x in _PATTERNS) for p in pieces)
+    if not shown:  # never described before the impact: not known,
         # unless its front made the impact and it is said to be moving ("V2 following behind V1 struck ...")
         moving = next((p.at + m.start() for p in pieces if (m := _MOVING_STRIKER.search(p.text))), None)
         if struck_first and moving is not None:
@@ -501,7 +505,7 @@ def read_actions_at(
     if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
         # read where it was shown moving, else where it was first described
-        described = next(p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text)))
+        described = next((p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text))), pieces[0].at)
         where.insert(0, moving_at if moving_at is not None else described)
     return tuple(ordered), tuple(where)
 

@@ -68,6 +68,13 @@ _SCENE = re.compile(
     re.IGNORECASE,
 )
 _NAME = re.compile(r"\b[VP]\d\b")
+# An opening participle with no subject of its own ("While attempting to pass V1, V2 made contact", "After
+# stopping, V2 began moving"): English gives it the subject of the clause it opens.
+_OPENING_PARTICIPLE = re.compile(
+    r"^(?:(?:while|when|after|before|upon|on|since|once|just after|just before) )?(?:\w+ly )?"
+    r"(?!(?:during|including|regarding|according|concerning|following|considering|pending)\b)[a-z]+ing\b[^,;.]*, ",
+    re.IGNORECASE,
+)
 
 
 @dataclass(frozen=True)
@@ -128,6 +135,10 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
                 back = next((w for a, w in reversed(events) if a < at and w), carry)
                 events.append((end.end(), back))
         events.sort()
+        opening = _OPENING_PARTICIPLE.match(sentence)
+        main = next(((a, w) for a, w in events if w and opening and a >= opening.end()), None)
+        if opening and main and main[0] == opening.end() and not any(a < main[0] for a, _ in events):
+            who = main[1]
         for at, whom in events:
             if at > start and sentence[start:at].strip():
                 out.append(Piece(who, sentence[start:at], offset + start, index, sentence))

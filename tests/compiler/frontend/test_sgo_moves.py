@@ -1,5 +1,6 @@
-"""Who did what when one party backs, and impacts said as a move into the other: each reading on narratives
-written for these tests (fleet style: the automated vehicle and the road user it met, named in words)."""
+"""Who did what in fleet narratives, each reading on narratives written for these tests (the automated vehicle
+and the road user it met, named in words): a party backing, impacts said as a move into the other, lane changes
+said by the lane or side used, attempts cut short, opening participles."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import read_sentence
 from sovarc.compiler.frontend.text import describes_impact
-from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Unknown
+from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Side, Unknown
 from sovarc.dsl.span import Source
 
 OPENING = (
@@ -115,3 +116,52 @@ def test_a_participant_after_a_preposition_is_an_object() -> None:
     assert kinds(s, "V1") == [ActionKind.STOP]
     assert kinds(s, "V2")[-1] is ActionKind.REVERSE
     assert (s.crash.striker, s.crash.type) == ("V2", CrashType.SIDE)
+
+
+@pytest.mark.parametrize(
+    ("said", "side"),
+    [
+        ("was switching lanes to the left", Side.LEFT),
+        ("attempted to maneuver around the Waymo AV using the right turn lane", Side.RIGHT),
+        ("maneuvered around the passenger side of the Waymo AV", Side.RIGHT),  # the driver sits on the left
+        ("began a lane-change around the driver side of the Waymo AV", Side.LEFT),
+    ],
+)
+def test_a_lane_change_said_by_the_lane_or_side_used(said: str, side: Side) -> None:
+    s = read(
+        OPENING + f"The Waymo AV was stopped in a queue of traffic when the sedan behind it {said}, and the "
+        "passenger side of the sedan made contact with the rear driver side of the Waymo AV."
+    )
+    p = next(p for p in s.participants if p.id == "V2")
+    assert (ActionKind.CHANGE_LANE, side) in [(a.kind, a.to) for a in p.known_actions]
+
+
+def test_an_attempt_cut_short_by_the_impact_is_the_move() -> None:
+    """ "attempted to pass V1 when ..." is the passing under way, after its stop: it drove on."""
+    s = read(
+        OPENING + "The Waymo AV was stopped at a red light. The sedan that was stopped behind the Waymo AV "
+        "attempted to pass the Waymo AV on the left when the front of the sedan made contact with the rear "
+        "driver side of the Waymo AV."
+    )
+    assert kinds(s, "V2") == [ActionKind.STOP, ActionKind.FOLLOW_LANE]
+
+
+def test_an_opening_participle_is_the_main_subjects() -> None:
+    """ "While moving into the left lane ..., V2 made contact": the opening clause is V2's, not the last
+    sentence's V1."""
+    s = read(
+        OPENING + "The Waymo AV came to a stop in a queue of traffic. While moving into the left lane to get around "
+        "the Waymo AV, the sedan made contact with the rear left sensor of the Waymo AV."
+    )
+    assert kinds(s, "V1") == [ActionKind.STOP]
+    assert kinds(s, "V2")[-1] is ActionKind.CHANGE_LANE
+
+
+def test_a_preposition_in_ing_opens_no_participle() -> None:
+    """ "During the left turn, V2 made contact": the turn is the last sentence's subject's, not V2's."""
+    s = read(
+        OPENING + "The Waymo AV was waiting to turn left and then proceeded with the left turn. During the left "
+        "turn, the sedan made contact with the front bumper of the Waymo AV."
+    )
+    assert kinds(s, "V1")[-1] is ActionKind.TURN_LEFT
+    assert ActionKind.TURN_LEFT not in kinds(s, "V2")
