@@ -218,10 +218,10 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     return text, note, words_of
 
 
-def partner_refusal(text: str) -> str | None:
+def partner_refusal(named: str, note: str | None) -> str | None:
     """Why a report numbered by rule cannot be read: its automated vehicle hit something the IR has no role
-    for ("a pole", "an animal") and no road user; None when it can be."""
-    named, note = label_parties(text)
+    for ("a pole", "an animal") and no road user; None when it can be. `named` and `note` are what `parties`
+    made of the report."""
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
     for sentence in sentences(named):
