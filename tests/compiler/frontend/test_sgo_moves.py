@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import read_sentence
+from sovarc.compiler.frontend.names import label_parties
 from sovarc.compiler.frontend.text import describes_impact
 from sovarc.dsl.ir import ActionKind, CrashType, Scenario, Side, Unknown
 from sovarc.dsl.span import Source
@@ -165,3 +166,28 @@ def test_a_preposition_in_ing_opens_no_participle() -> None:
     )
     assert kinds(s, "V1")[-1] is ActionKind.TURN_LEFT
     assert ActionKind.TURN_LEFT not in kinds(s, "V2")
+
+
+def test_a_partner_named_by_its_make_is_the_crash_partner() -> None:
+    """ "struck from behind by a grey Honda": a make names a vehicle; "The vehicle" before it points back to the
+    automated vehicle, it introduces nobody."""
+    named, note = label_parties(
+        "A Motional AV was operating in autonomous mode. The vehicle was waiting in a right-turn lane.\n"
+        "While stopped, the AV was struck from behind by a\ngrey Honda at low speed. The Honda left the scene."
+    )
+    assert note is not None and "V2 'a grey Honda'" in note
+    assert "The vehicle was waiting" in named  # not V2
+    assert "struck from behind by V2" in named and "V2 left the scene" in named
+
+
+def test_an_acronym_after_an_article_is_no_make() -> None:
+    named, _ = label_parties("The Waymo AV was stopped at a light when it was struck by an ADS test fleet's sedan.")
+    assert "V2" in named and "an ADS" not in named.replace("V2", "")  # the sedan, by its kind noun
+
+
+def test_the_automated_vehicle_said_with_words_before_its_brand() -> None:
+    s = read(
+        "A stopped Zoox vehicle in autonomous mode was struck by a passenger vehicle that approached it from "
+        "behind. The Zoox vehicle's rear bumper was damaged."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
