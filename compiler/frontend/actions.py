@@ -48,7 +48,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.PARKED,
         re.compile(
-            r"\bparked\b|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
+            # (not "parked" said of other road users: "rows of parked cars", "vehicles parked at the curb")
+            r"(?<!\bvehicles )(?<!\bcars )(?<!\btrucks )\bparked\b"
+            r"(?! (?:[a-z]+ )?(?:cars|vehicles|trucks|vans|suvs|buses|motorcycles|bikes|bicycles|trailers)\b)"
+            r"|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
             r"|parallel[- ]parking (?:space|spot))",
             re.I,
         ),

@@ -131,6 +131,12 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
         events = _events(sentence, ids, others)
         who, start = (() if _SCENE.match(sentence) else carry), 0
         for at, whom in list(events):
+            # other road users said in a "with" phrase ("with vehicles parked at the curb, and came to a stop")
+            # are an aside: the subject's clause resumes after it
+            aside = not whom and re.search(r"\bwith (?:\w+ ){0,2}$", sentence[:at])
+            if aside and (comma := sentence.find(",", at)) >= 0:
+                events.append((comma + 1, next((w for a, w in reversed(events) if a < at and w), carry)))
+                continue
             if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
                 back = next((w for a, w in reversed(events) if a < at and w), carry)
                 events.append((end.end(), back))

@@ -191,3 +191,28 @@ def test_the_automated_vehicle_said_with_words_before_its_brand() -> None:
         "behind. The Zoox vehicle's rear bumper was damaged."
     )
     assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+def test_other_road_users_parked_are_not_the_subject_parked() -> None:
+    """ "a narrow street with rows of parked cars": the cars were parked, the automated vehicle drove and stopped."""
+    s = read(
+        OPENING + "The Waymo AV was traveling north on [XXX], a narrow street with rows of parked cars on both "
+        "sides. The Waymo AV slowed to a stop to yield to the sedan. As the sedan passed the stopped Waymo AV, the "
+        "driver side of the sedan made contact with the rear driver side of the Waymo AV."
+    )
+    assert kinds(s, "V1") == [ActionKind.FOLLOW_LANE, ActionKind.STOP]
+
+
+def test_a_vehicle_said_parked_is_parked() -> None:
+    s = read(OPENING + "The Waymo AV was parked at the curb when the sedan backed into the front of the Waymo AV.")
+    assert kinds(s, "V1") == [ActionKind.PARKED]
+
+
+def test_road_users_in_a_with_phrase_are_an_aside() -> None:
+    """ "..., with vehicles parked at the curb in both directions, and came to a stop": the stop is the subject's."""
+    s = read(
+        OPENING + "The Waymo AV was traveling west on a narrow portion of [XXX], with vehicles parked at the curb in "
+        "both directions, and came to a stop to let the sedan pass. As the sedan passed, the front driver side of "
+        "the sedan made contact with the rear driver side of the Waymo AV."
+    )
+    assert kinds(s, "V1")[-1] is ActionKind.STOP
