@@ -76,8 +76,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.RETROGRADE,
         re.compile(
-            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
-            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re) ?line)"
+            # the line between the directions, however it is named: "the center lane line", "the centre divider"
+            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
+            r"|\bleft of cent(?:er|re)\b"
+            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
             r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side|direction)\b"
             r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
             r"|\bover the lane line on (?:the )?left side|\blane departure to the left"

@@ -216,3 +216,22 @@ def test_road_users_in_a_with_phrase_are_an_aside() -> None:
         "the sedan made contact with the rear driver side of the Waymo AV."
     )
     assert kinds(s, "V1")[-1] is ActionKind.STOP
+
+
+@pytest.mark.parametrize(
+    "said", ["crossing the center lane line", "crossing over the centre divider", "across the center-line"]
+)
+def test_over_the_line_between_the_directions_is_the_wrong_side(said: str) -> None:
+    s = read(
+        OPENING + f"The Waymo AV was traveling east on [XXX] when the sedan turned right onto [XXX], {said}, and "
+        "the front of the sedan struck the left side of the Waymo AV."
+    )
+    assert kinds(s, "V2")[-1] is ActionKind.RETROGRADE
+
+
+def test_a_center_lane_is_no_line_between_the_directions() -> None:
+    s = read(
+        OPENING + "The Waymo AV was traveling east on [XXX] in the center lane when the sedan behind it, also in "
+        "the center lane, made contact with the rear of the Waymo AV."
+    )
+    assert ActionKind.RETROGRADE not in kinds(s, "V2")
