@@ -24,27 +24,10 @@ from xml.etree import ElementTree
 
 # Lane kinds that are ground a car can drive over, not lanes it drives in (OpenDRIVE 1.4-1.8).
 FLAT = frozenset({"shoulder", "border", "none", "median", "restricted"})
-# Lane kinds netconvert builds as lanes: the first of them, going out from the centre, ends a median.
-CARRIAGEWAY = frozenset(
-    {
-        "driving",
-        "stop",
-        "bidirectional",
-        "onramp",
-        "offramp",
-        "entry",
-        "exit",
-        "connectingramp",
-        "mwyentry",
-        "mwyexit",
-        "parking",
-        "biking",
-        "sidewalk",
-        "walking",
-        "tram",
-        "rail",
-        "curb",
-    }
+# Lane kinds netconvert builds as car lanes: the first of them, going out from the centre, ends a
+# median; any other kind before it (a path, a bike lane, a rail, a kerb) makes it no open ground.
+CAR_LANES = frozenset(
+    {"driving", "stop", "bidirectional", "onramp", "offramp", "entry", "exit", "connectingramp", "mwyentry", "mwyexit"}
 )
 KERB_MARKS = frozenset({"curb"})  # a road mark that is a raised edge, not paint
 RAISED = 0.12  # m: a lane raised this much or more (OpenDRIVE <height>) is a kerbed island
@@ -112,7 +95,7 @@ def _median(lanes: list[ElementTree.Element], key: object) -> float | None:
     width = 0.0
     for lane in sorted(lanes, key=lambda lane: key(int(lane.get("id", "0")))):  # type: ignore[operator]
         kind = lane.get("type", "").lower()
-        if kind == "driving" or kind in CARRIAGEWAY:
+        if kind in CAR_LANES:
             return width
         if kind not in FLAT or _raised(lane):
             return None
