@@ -18,7 +18,7 @@ right-hand side, '.<s>' for a lane section) whose road has such a median all alo
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from xml.etree import ElementTree
 
@@ -62,9 +62,8 @@ def _open_roads(root: ElementTree.Element) -> set[str]:
         length = float(road.get("length", "0"))
         objects = road.findall("objects/object")
         starts = [float(sec.get("s", "0")) for sec in sections] + [length]
-        if sections and all(
-            _section_open(sec, lo, hi, offsets, objects) for sec, lo, hi in zip(sections, starts, starts[1:], strict=False)
-        ):
+        spans = zip(sections, starts, starts[1:], strict=False)
+        if sections and all(_section_open(sec, lo, hi, offsets, objects) for sec, lo, hi in spans):
             found.add(road.get("id", ""))
     return found
 
@@ -89,11 +88,11 @@ def _section_open(
     return not any(_stands_in(o, band, lo, hi) for o in objects)
 
 
-def _median(lanes: list[ElementTree.Element], key: object) -> float | None:
+def _median(lanes: list[ElementTree.Element], key: Callable[[int], int]) -> float | None:
     """The width of the flat ground between the centre line and a side's first car lane, or None
     when that side has no car lane or something other than flat ground lies before it."""
     width = 0.0
-    for lane in sorted(lanes, key=lambda lane: key(int(lane.get("id", "0")))):  # type: ignore[operator]
+    for lane in sorted(lanes, key=lambda lane: key(int(lane.get("id", "0")))):
         kind = lane.get("type", "").lower()
         if kind in CAR_LANES:
             return width
@@ -106,9 +105,7 @@ def _median(lanes: list[ElementTree.Element], key: object) -> float | None:
 
 
 def _raised(lane: ElementTree.Element) -> bool:
-    return any(
-        max(float(h.get("inner", "0")), float(h.get("outer", "0"))) >= RAISED for h in lane.findall("height")
-    )
+    return any(max(float(h.get("inner", "0")), float(h.get("outer", "0"))) >= RAISED for h in lane.findall("height"))
 
 
 def _offset(offsets: list[tuple[float, ElementTree.Element]], s: float) -> float:

@@ -75,9 +75,7 @@ def test_an_open_median_of_shoulders_is_one_two_way_road(tmp_path: Path, monkeyp
     assert "open median 6.0 m" in describe(site)
 
 
-def test_a_painted_island_of_border_and_median_lanes_is_open(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
+def test_a_painted_island_of_border_and_median_lanes_is_open(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     road_map = build(tmp_path, monkeypatch, xodr([("border", 0.5), ("median", 1.5)]))
     assert arms_per_site(road_map) == [2]
 
