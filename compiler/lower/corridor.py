@@ -126,10 +126,14 @@ class Drive:
         less a margin for the synthesized path). A body no longer than the car changes lanes as a car
         always has: its swing is within the shortest change but where the road is wide or the move
         long (a swerve into an oncoming lane past a gap), and a car's plans are not to change."""
-        if self.body.length <= CAR.length:
-            return change_length(self.speed)
         width = self._lane_width()
         room = width / 2.0 + LINE_TOLERANCE - self.body.width / 2.0 - SWING_MARGIN
+        if self.median > 0.0 and lanes > 1.0:
+            # across a road with an open median, far wider than its lanes side by side: long enough
+            # to keep one lane change's sideways acceleration (the width over the length squared)
+            return max(change_length(self.speed) * lanes**0.5, swept_change_length(self.body, lanes * width, room))
+        if self.body.length <= CAR.length:
+            return change_length(self.speed)
         return max(change_length(self.speed), swept_change_length(self.body, lanes * width, room))
 
     def shift_to(self, number: int) -> None:
