@@ -54,18 +54,25 @@ def road_of(edge_id: str) -> str:
 def _open_roads(root: ElementTree.Element) -> set[str]:
     found = set()
     for road in root.iter("road"):
-        lanes = road.find("lanes")
-        if lanes is None:
-            continue
-        sections = lanes.findall("laneSection")
-        offsets = sorted((float(o.get("s", "0")), o) for o in lanes.findall("laneOffset"))
-        length = float(road.get("length", "0"))
-        objects = road.findall("objects/object")
-        starts = [float(sec.get("s", "0")) for sec in sections] + [length]
-        spans = zip(sections, starts, starts[1:], strict=False)
-        if sections and all(_section_open(sec, lo, hi, offsets, objects) for sec, lo, hi in spans):
-            found.add(road.get("id", ""))
+        try:
+            if _road_open(road):
+                found.add(road.get("id", ""))
+        except ValueError:
+            continue  # a number the file garbles: nothing is known of that road's median
     return found
+
+
+def _road_open(road: ElementTree.Element) -> bool:
+    """Whether every lane section of the road has a crossable median."""
+    lanes = road.find("lanes")
+    if lanes is None:
+        return False
+    sections = lanes.findall("laneSection")
+    offsets = sorted(((float(o.get("s", "0")), o) for o in lanes.findall("laneOffset")), key=lambda x: x[0])
+    objects = road.findall("objects/object")
+    starts = [float(sec.get("s", "0")) for sec in sections] + [float(road.get("length", "0"))]
+    spans = zip(sections, starts, starts[1:], strict=False)
+    return bool(sections) and all(_section_open(sec, lo, hi, offsets, objects) for sec, lo, hi in spans)
 
 
 def _section_open(

@@ -136,3 +136,9 @@ def test_open_medians_names_the_edges_of_open_roads(tmp_path: Path) -> None:
 def test_a_sumo_network_has_no_open_medians(town: RoadMap) -> None:
     # a SUMO network does not say what lies between two carriageways: none is taken to be open
     assert all(site.median == 0.0 for site in find_sites(town))
+
+
+def test_a_garbled_number_leaves_a_road_closed(tmp_path: Path) -> None:
+    # a map's defect is no exception: nothing is known of that road's median, so it stays divided
+    (tmp_path / "c.xodr").write_text(xodr(SHOULDERS).replace('a="3.0"', 'a="wide"'))
+    assert open_medians(tmp_path / "c.xodr", ["7", "-7"]) == frozenset()
