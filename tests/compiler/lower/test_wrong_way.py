@@ -108,6 +108,10 @@ def test_a_swerve_crosses_an_open_median_its_site_records() -> None:
     drive.median = 3.0
     drive.retrograde(1, 40.0)
     assert drive.against and drive.line.resample(1.0)[-1, 1] == pytest.approx(WIDTH + 3.0)
+    # twice a lane's width sideways: a lane change's length (30 m at 10 m/s) times the root of the
+    # widths crossed, for the same sideways acceleration
+    lo, hi = drive.stretches[1]
+    assert hi - lo == pytest.approx(30.0 * ((WIDTH + 3.0) / WIDTH) ** 0.5, abs=0.5)
     wider = _eastbound_with_oncoming(start=0.0, median=5.0)
     wider.median = 3.0  # a gap wider than the site's open median is still refused
     with pytest.raises(LoweringError, match=r"a median 5\.0 m wide divides the road"):
