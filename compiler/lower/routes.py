@@ -67,6 +67,7 @@ def vehicle_route(
         speed=speed,
         wrong_way_lane=wrong_way_lane,
         site=match.site.id,
+        median=match.site.median,
         body=body,
     )
     actions = p.known_actions

@@ -262,8 +262,12 @@ def _no_fit(
         message += ramps(road_map, scenario.road.kind)
     of_kind = [site for site in sites if site.kind is scenario.road.kind]
     if of_kind and not any(all(arm.two_way for arm in site.arms) for site in of_kind):
-        # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX)
-        message += f"; none of its {len(of_kind)} {KIND_NAMES[scenario.road.kind][1]} is two-way throughout"
+        # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX),
+        # unless the map describes the ground between them as open (medians.py)
+        message += (
+            f"; none of its {len(of_kind)} {KIND_NAMES[scenario.road.kind][1]} is two-way throughout"
+            " (divided by a barrier, a kerb or ground the map does not describe as open)"
+        )
     if of_kind and len(needs) > 1:
         # which participant the map's sites of this kind fail, each need on its own (any rotation)
         alone = [sum(match_site(site, (need,), clamp=True) is not None for site in of_kind) for need in needs]
