@@ -63,8 +63,11 @@ AS_BACKING = {
 # (compiler/crashes.struck_face). 15 degrees past every oracle's bound for a rear-end, as ALONG is inside it.
 SIDE_TURNED = CRASH_ANGLES["rear_end"][1] + 15.0
 SIDE_MARGIN = 0.3  # m the victim's rear corner is inside the striker's way at such a contact
-# A car turning in legs is struck where along its side the striker's path crosses it: as it moves
-# off from its last change of gear its body lies across a lane, its middle often past that path.
+# Where along the victim's side a side crash puts the striker's front, of its length from the front:
+# the middle first, then further back. A car turning in legs lies across a lane as it moves off from
+# its last change of gear, its middle often past the striker's path; and a striker that meets a moving
+# victim's side at an angle (a left turner across an oncoming car) placed at the middle first touches
+# its front corner as the victim drives on into it (synthesis refuses such a plan: the next is tried).
 TURNING_SIDE = (0.5, 0.65, 0.8)
 
 
@@ -94,7 +97,9 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
     k = FACE[named] * victim.body.length
     side = crash is CrashType.SIDE
     if whole or not (striker.manoeuvres or victim.manoeuvres):
-        found = _meetings(_View.of_line(striker), _View.of_line(victim), k, side)
+        faces = [face * victim.body.length for face in TURNING_SIDE] if side and not whole else [k]
+        mine, theirs = _View.of_line(striker), _View.of_line(victim)
+        found = list(dict.fromkeys(c for back in faces for c in _meetings(mine, theirs, back, side)))
     else:
         lead = striker.body.length if backing else 0.0
         mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_line(striker)
