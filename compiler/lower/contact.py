@@ -60,9 +60,10 @@ AS_BACKING = {
 }
 # A vehicle turning off the lane its follower keeps is met on its side only once it has turned this
 # far from the follower's heading: before that its rear corner is what the follower meets, from behind
-# (compiler/crashes.struck_face). 15 degrees past every oracle's bound for a rear-end, as ALONG is inside it.
-SIDE_TURNED = CRASH_ANGLES["rear_end"][1] + 15.0
-SIDE_MARGIN = 0.3  # m the victim's rear corner is inside the striker's way at such a contact
+# (compiler/crashes.struck_face: a rear-end up to 45 degrees). 5 degrees past that bound: a driveway
+# turn's rear corner leaves the follower's way soon after, and synthesis measures the touch itself.
+SIDE_TURNED = CRASH_ANGLES["rear_end"][1] + 5.0
+SIDE_MARGIN = 0.1  # m the victim's rear corner is inside the striker's way at such a contact
 # Where along the victim's side a side crash puts the striker's front, of its length from the front:
 # the middle first, then further back. A car turning in legs lies across a lane as it moves off from
 # its last change of gear, its middle often past the striker's path; and a striker that meets a moving
