@@ -412,7 +412,9 @@ def _no_contact(
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
-    if crash is CrashType.SIDE and any(c.kind == "shared" and c.sign == 1 for c in seen):
+    # a victim that leaves the lane they share (its line angles off it: a rear-end's crossing contact)
+    leaves = any(c.kind == "crossing" for c in contacts(striker, victim, CrashType.REAR_END))
+    if crash is CrashType.SIDE and leaves and any(c.kind == "shared" and c.sign == 1 for c in seen):
         s, v = striker.participant.id, victim.participant.id
         how += (
             f"; following {v} in its lane, {s} meets its rear: {v} is never turned {SIDE_TURNED:.0f} degrees or "
