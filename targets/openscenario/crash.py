@@ -118,10 +118,16 @@ def _area(scene: Scene, crash: Crash) -> Finding:
     return Finding("collision_area", True, message, crash.time)
 
 
+def first_touch_time(scenario: ScenarioFile, paths: dict[str, tuple[Pose, ...]], a: str, b: str) -> float | None:
+    """When bodies a and b first touch as the file moves them (within 1 cm; None: never)."""
+    scene = Scene(scenario, paths)
+    return next((t for t in _times(0.0, scene.end(a, b)) if gap(scene.box(a, t), scene.box(b, t)) <= 0.01), None)
+
+
 def _contact(scene: Scene, crash: Crash, facts: dict[str, object]) -> tuple[Finding, float | None]:
     """The first-contact finding and the time of the first touch (None: never)."""
     a, b = crash.striker, crash.victim
-    first = next((t for t in _times(0.0, scene.end(a, b)) if gap(scene.box(a, t), scene.box(b, t)) <= 0.01), None)
+    first = first_touch_time(scene.scenario, scene.paths, a, b)
     facts["first_contact_time"] = None if first is None else round(first, 3)
     if first is None:
         return Finding("first_contact", False, f"{a} and {b} never touch"), None
