@@ -12,7 +12,7 @@ from sovarc.compiler.lower import sites_for
 from sovarc.compiler.maps import RoadMap, find_sites, match_sites
 from sovarc.compiler.maps.search import geometric_exit
 from sovarc.compiler.staging import stage_on_site
-from sovarc.dsl.errors import LoweringError
+from sovarc.dsl.errors import LoweringError, SovarcError
 from sovarc.dsl.ir import ActionKind, RoadKind
 from sovarc.targets.sumo.check import check
 
@@ -65,3 +65,14 @@ def test_a_left_turn_laid_by_geometry_plans_and_passes_the_sumo_oracle(tmp_path:
     plan = stage_on_site(staged, notes, road_map, matches[0])
     verdict = check(plan)
     assert verdict.passed, verdict.dumps()
+
+
+def test_a_site_that_fits_only_clamped_names_what_it_lacks_when_it_cannot_host_the_crash(tmp_path: Path) -> None:
+    # two cars side by side in two left-turn lanes, on a crossing of one lane each way: clamped into
+    # one lane, they cannot be side by side, and the reason says the site lacked the lane
+    nodes = {"w": (-250, 0), "a": (0, 0), "e": (250, 0), "s": (0, -250), "n": (0, 250)}
+    road_map = build(tmp_path, nodes, ["wa w a 1", "ae a e 1", "sa s a 1", "an a n 1"])
+    staged, notes, matches = sites_for(scenario("intersection_dual_left_turn_side"), road_map, roads=1)
+    assert matches[0].clamped
+    with pytest.raises(SovarcError, match=r"\(the site fits only clamped: .*lanes needed"):
+        stage_on_site(staged, notes, road_map, matches[0])
