@@ -27,7 +27,7 @@ def stage_on_site(staged: Scenario, notes: list[str], road_map: RoadMap, match: 
     try:
         return _first_plan(staged, notes, road_map, match, seed)
     except SovarcError as error:
-        if not match.clamped or not error.diagnostics:
+        if not getattr(match, "clamped", ()) or not error.diagnostics:
             raise
         head, *rest = error.diagnostics
         lacked = "; ".join(match.clamped)
