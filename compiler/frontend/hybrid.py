@@ -18,8 +18,10 @@
 The rule of settlement: a fact stands on a sentence that states it.
 - A fact's evidence is the sentence it was read from. It holds when that
   sentence was shown, is about the fact's participant (names it, or carries
-  it as "he", "the driver") and states the fact as done: a cue word of the
-  action not under an intention ("intending to turn left" states no turn),
+  it as "he", "the driver") and states the fact as done, in a piece of the
+  sentence that is the participant's own (`clauses.pieces`: "the driver of V1
+  stopped, the driver of V2 crossed over" states no stop of V2): a cue word of
+  the action not under an intention ("intending to turn left" states no turn),
   for the crash a sentence describing the impact that names the striker and
   victim given.
 - The rules' facts hold by construction: each is read from one clause of one
@@ -29,8 +31,10 @@ The rule of settlement: a fact stands on a sentence that states it.
   its sentence: the model corrects the rules where they dropped or missed a
   stated action. A fact of the rules the model lacks stays: an omission is
   no evidence.
-- Two facts that exclude each other (a left against a right turn, two crash
-  types, two strikers) where both hold: the rules' stands, since they read
+- Two facts that exclude each other (a left against a right turn, a lane
+  change against crossing into the oncoming lanes, which is one move out of
+  the lane named two ways; standing parked against stopping; two crash types,
+  two strikers) where both hold: the rules' stands, since they read
   the exact clause where the model reads a few sentences at once; when the
   rules have none (an unknown crash type, a struck part not named), the
   model's that holds is taken, its type cross-checked against the headings.
@@ -163,8 +167,12 @@ def _name(a: Action) -> str:
 
 
 def _stating(shown: Shown, pid: str, numbers: Iterable[int], a: Action) -> list[int]:
-    """The sentences among `numbers` that are about `pid` and state `a` as done."""
-    return [n for n in numbers if shown.about(n, pid) and states_action(shown.get(n).text, _name(a))]  # type: ignore[union-attr]
+    """The sentences among `numbers` that are about `pid` and state `a` as done in a piece of their own."""
+    return [
+        n
+        for n in numbers
+        if shown.about(n, pid) and any(states_action(text, _name(a)) for text in shown.pieces_of(n, pid))
+    ]
 
 
 def _family(a: Action) -> str:
@@ -175,6 +183,12 @@ def _family(a: Action) -> str:
         ActionKind.TURN_RIGHT: "turn",
         ActionKind.DRIVE_INTO: "road edge",
         ActionKind.DRIVE_OFF: "road edge",
+        # one move out of the lane: into the next lane or over the centre line into the oncoming ones
+        ActionKind.CHANGE_LANE: "out of lane",
+        ActionKind.RETROGRADE: "out of lane",
+        # standing still: a parked car is stopped, and the model's stop is the rules' parked
+        ActionKind.STOP: "standing",
+        ActionKind.PARKED: "standing",
     }
     return families.get(a.kind, a.kind.value)
 

@@ -25,6 +25,7 @@ import re
 from dataclasses import dataclass
 from difflib import SequenceMatcher
 
+from sovarc.compiler.frontend.clauses import pieces
 from sovarc.compiler.frontend.sentences import sentences
 from sovarc.compiler.frontend.text import describes_impact, first_impact, prepare
 
@@ -63,6 +64,14 @@ class Shown:
             before = next((b for b in reversed(self.sentences[:i]) if _NAMED.search(b.text)), None)
             return before is not None and set(_NAMED.findall(before.text)) == {pid}
         return False
+
+    def pieces_of(self, number: int, pid: str) -> list[str]:
+        """The pieces of sentence `number` that are `pid`'s own doing (`clauses.pieces`: cut at each
+        subject, read in the shown sentences' order so that "he" carries the last subject)."""
+        texts = [s.text for s in self.sentences]
+        ids = sorted({name for text in texts for name in _NAMED.findall(text)})
+        index = next((i for i, s in enumerate(self.sentences) if s.number == number), None)
+        return [p.text for p in pieces(texts, ids) if p.sentence == index and pid in p.who]
 
     def text(self) -> str:
         return "\n".join(f"[{s.number}] {s.text}" for s in self.sentences)

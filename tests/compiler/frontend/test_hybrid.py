@@ -325,3 +325,29 @@ def test_every_action_kind_has_cue_words_for_its_evidence(kind: ActionKind) -> N
     if kind in stated:
         assert states_action(stated[kind], kind.value)
         assert not states_action("V2 was traveling north in the right lane.", kind.value)
+
+
+def test_evidence_is_read_in_the_participants_own_piece_of_a_sentence() -> None:
+    # a run-on sentence: the stop is V1's, the crossing over V2's; V2 is named in it but did not stop
+    shown = motion_layer(
+        "V1 was eastbound on a two-lane road. V2 was westbound. "
+        "The driver of V1 pulled over and stopped the driver of V2 crossed the center line and struck V1."
+    )
+    rules = _two(FOLLOW, (*FOLLOW, Action(ActionKind.RETROGRADE)))
+    answer = '{"V1":["follow","stop",1,3],"V2":["follow","stop","wrong_way",2,3],"crash":["frontal","V2","V1",3]}'
+    merged, notes = merge(rules, parse_answer(answer, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "stop"]
+    assert [a.kind for a in merged.participant("V2").known_actions] == ["follow_lane", "retrograde"]
+    assert "V2 actions: the model's stop cites sentence(s) 2, 3, which do not state it of V2; rejected" in notes
+
+
+def test_one_move_named_two_ways_keeps_the_rules_name() -> None:
+    shown = motion_layer(
+        "V1 was northbound in a curve when it went left over the double yellow lines into the southbound lane. "
+        "V2 was southbound. V1 struck the front of V2 with its front."
+    )
+    rules = _two((*FOLLOW, Action(ActionKind.RETROGRADE)), FOLLOW)
+    answer = '{"V1":["follow","lane_left",1],"V2":["follow",2],"crash":["frontal","V1","V2",3]}'
+    merged, notes = merge(rules, parse_answer(answer, ["V1", "V2"], shown), shown)
+    assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "retrograde"]
+    assert "V1 actions: the model read change_lane_left, the rules retrograde; kept the rules" in notes
