@@ -25,14 +25,14 @@ import sys
 import tempfile
 import time
 from collections import Counter, defaultdict
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 
-from sovarc.compiler.maps import load_map  # noqa: E402
+from sovarc.compiler.maps import load_map, with_opendrive  # noqa: E402
 from sovarc.compiler.pipeline import Options as PipelineOptions  # noqa: E402
 from sovarc.compiler.pipeline import stage_sites  # noqa: E402
 from sovarc.compiler.plan import Plan, dump_plan, plan_from_json  # noqa: E402
@@ -133,6 +133,7 @@ def evaluate(args: argparse.Namespace) -> list[Row]:
                 row.sumo = sumo.check(plan)
                 row.seconds["sumo check"] = time.perf_counter() - start
                 folder = Path(tmp) / f"{path.stem}-{len(rows)}"
+                plan = replace(plan, network=with_opendrive(plan.network))  # as compiler.emit gives it the target
                 start = time.perf_counter()
                 files_ = emit_files(plan, folder, args.version)
                 row.seconds["osc emit"] = time.perf_counter() - start
