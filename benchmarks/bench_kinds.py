@@ -1,0 +1,132 @@
+"""Issue 20's first target, measured: each new road user and move compiles to all three targets on the
+bundled town and on CARLA towns, and passes every oracle, esmini included.
+
+    ESMINI=.../esmini python benchmarks/bench_kinds.py [-m MAP]... [--roads 3] [-j 1] [--out DIR]
+
+Each issue-20 example (examples/scenarios: every kind, every move, twilight) and the backing
+variants (examples/variants) go through `sovarc batch -t all` on every map; the table is read back
+from the batch's manifest and each site's verdict files. One row per scenario and map, one column
+per target: sites passed / sites asked for, then the first reason of each failure. The OpenSCENARIO
+column counts a site as passed only when esmini also played it (set ESMINI, or put esmini on PATH);
+the FMU column when every ego test of the site passes. Without -m: the town and Town01 (the maps
+the moves were built on), then Town02 (held out). Asserts nothing; prints the CPU time per map.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import tempfile
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+from sovarc.compiler.cli import main as sovarc
+
+ROOT = Path(__file__).resolve().parent.parent
+SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
+CARLA = SHARED / "data" / "opendrive" / "carla"
+TUNED = [ROOT / "examples" / "maps" / "town.net.xml", CARLA / "Town01.xodr"]
+HELD_OUT = [CARLA / "Town02.xodr"]
+TARGETS = ("sumo", "openscenario", "fmu")
+# what each scenario stands for in issue 20 -> its file (examples/scenarios, else examples/variants)
+SCENARIOS = {
+    "van": "straight_van_lane_change_rear_end",
+    "pickup, twilight": "t_junction_pickup_left_turn_out_side",
+    "bus, cyclist partner": "intersection_bus_left_turn_cyclist_side",
+    "truck": "intersection_truck_left_turn_side",
+    "motorcycle": "straight_motorcycle_rear_ended",
+    "bicycle, twilight": "intersection_cyclist_go_across_side",
+    "reverse": "straight_reverse_into_stopped_rear_end",
+    "parked": "straight_parked_car_struck_rear_end",
+    "parked, reverse": "straight_back_out_of_parking_rear_end",
+}
+
+
+def source(name: str) -> Path:
+    for folder in ("scenarios", "variants"):
+        path = ROOT / "examples" / folder / f"{name}.sov"
+        if path.is_file():
+            return path
+    raise FileNotFoundError(name)
+
+
+def _failures(site: Path, target: str) -> list[str]:
+    """The messages of the failed findings in a site's verdict for `target`, first ones first."""
+    path = site / f"verdict-{target}.json"
+    if not path.is_file():
+        return [f"no verdict-{target}.json"]
+    data = json.loads(path.read_text(encoding="utf-8"))
+    verdicts = data if isinstance(data, list) else [data]
+    found = []
+    for verdict in verdicts:
+        prefix = f"ego {verdict.get('facts', {}).get('ego')}: " if target == "fmu" else ""
+        found += [prefix + f["message"] for f in verdict.get("findings", []) if not f["passed"]]
+    if target == "openscenario" and not any(
+        f.get("check") == "player_run" for v in verdicts for f in v.get("findings", [])
+    ):
+        found.append("esmini did not play it (set ESMINI)")
+    return found
+
+
+def cell(rows: list[dict[str, Any]], out: Path, target: str, roads: int) -> tuple[str, list[str]]:
+    """`passed/roads` for one target, and the reasons of the misses."""
+    reasons: list[str] = []
+    passed = 0
+    for row in rows:
+        if not row["site"]:  # the task found no site, or failed as a whole
+            reasons.append(f"no site: {row['error']}")
+            continue
+        if not row["planned"]:
+            reasons.append(f"not planned: {row['error']}")
+            continue
+        failures = _failures(out / row["folder"], target)
+        if not failures:
+            passed += 1
+        reasons += failures[:1]
+    missing = roads - len([r for r in rows if r["site"]])
+    if rows and rows[0]["site"] and missing > 0:
+        reasons += [f"{missing} site(s) short"]
+    return f"{passed}/{roads}", reasons
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("-m", "--map", action="append", type=Path, help="maps (default: built-on, then held-out)")
+    parser.add_argument("--roads", type=int, default=3)
+    parser.add_argument("-j", "--jobs", type=int, default=1)
+    parser.add_argument("--out", type=Path, default=None)
+    args = parser.parse_args()
+    maps = (
+        [(m, "") for m in args.map]
+        if args.map
+        else [(m, "built on") for m in TUNED] + [(m, "held out") for m in HELD_OUT]
+    )
+    out = args.out or Path(tempfile.mkdtemp(prefix="bench_kinds_"))
+    inputs = [str(source(name)) for name in SCENARIOS.values()]
+    argv = ["batch", *inputs, "-t", "all", "--roads", str(args.roads), "-j", str(args.jobs), "-o", str(out)]
+    sovarc(argv + [arg for m, _ in maps for arg in ("-m", str(m))])
+    manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
+    totals: Counter[tuple[str, str]] = Counter()
+    for map_path, why in maps:
+        rows_here = [r for r in manifest if Path(r["map"]) == map_path]
+        cpu = sum({r["task"]: r["cpu_seconds"] or 0.0 for r in rows_here}.values())
+        print(f"\n{map_path.name}{', ' + why if why else ''} (CPU {cpu:.0f} s)")
+        print(f"  {'kind / move':<22} " + " ".join(f"{t:<13}" for t in TARGETS))
+        for label, name in SCENARIOS.items():
+            rows = [r for r in rows_here if Path(r["input"]).stem == name]
+            cells = [cell(rows, out, t, args.roads) for t in TARGETS]
+            for target, (text, _) in zip(TARGETS, cells, strict=True):
+                totals[(why or map_path.name, target)] += int(text.split("/")[0])
+            print(f"  {label:<22} " + " ".join(f"{text:<13}" for text, _ in cells))
+            reasons = Counter(f"{t}: {r[:150]}" for t, (_, rs) in zip(TARGETS, cells, strict=True) for r in rs)
+            for reason, count in sorted(reasons.items()):
+                print(f"      {count} x {reason}")
+    asked = len(SCENARIOS) * args.roads
+    print("\npassed of", asked, "per map group:", dict(totals))
+    print(f"batch folder: {out}")
+
+
+if __name__ == "__main__":
+    main()
