@@ -1,0 +1,121 @@
+"""A heavy vehicle's corner: it swings wide where the junction's connection is drawn for a car.
+
+SUMO draws a junction's connections for cars: a right turn at a town or CARLA corner bends at a
+5.5-8 m radius, and a bus or truck (the vehicle model's tightest bend, 9 m) cannot follow it. Its
+driver turns from the stop line at the body's own radius and so comes out of the corner wide, in
+the far part of the road it enters (the lane to the left of its exit lane, or the opposing lane of
+a street with one lane each way), then eases back into its exit lane, as buses and trucks do.
+
+`wide_turn` lays that line out: a circular arc of the body's tightest radius from the stop line
+through the turn's whole angle, then a smoothstep back onto the exit lane's centre line over one
+of a few lengths. The shortest return whose body (the plan's box, its front on the line, facing
+along it) stays on lanes the vehicle may drive, every corner within half a lane of one (moved in by
+the oracles' lane-line tolerance), is taken. A corner that even this cannot take stays refused
+(routes.py's corner check), with the reason.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from sovarc.compiler.crashes import LINE_TOLERANCE
+from sovarc.compiler.geometry.angles import angle_diff, heading_vector
+from sovarc.compiler.geometry.bodies import Box
+from sovarc.compiler.geometry.polyline import Point, Polyline, blend, concat, distances_to
+from sovarc.compiler.maps import RoadMap
+from sovarc.compiler.vehicles import Body, model
+
+RETURNS = (8.0, 11.0, 14.0, 18.0, 23.0, 29.0, 36.0, 44.0)  # m over which the body eases back into its exit lane
+ARC_STEP = 0.5  # m between the arc's points
+CHECK_STEP = 0.5  # m between the body poses checked
+NEAR = 15.0  # m around the turn in which the map's lanes are looked at
+MIN_TURN = 30.0  # deg: a gentler bend is no corner
+
+
+def wide_turn(start: Point, heading: float, exit_line: Polyline, body: Body, road_map: RoadMap) -> Polyline | None:
+    """The line from the stop line (`start`, facing `heading`) through a corner at the body's own
+    radius and back onto `exit_line` (the exit lane's centre line, from the junction on); None when
+    the turn is no corner, the corner is wide enough as drawn, or no return keeps the body on the road."""
+    radius = model(body).limits.path_radius
+    turn = angle_diff(exit_line.heading(0.0), heading)  # signed, positive turning right (clockwise)
+    if abs(turn) < MIN_TURN:
+        return None
+    arc = _arc(start, heading, turn, radius)
+    end = arc.point(arc.length)
+    along, lateral = _frame(exit_line, end)
+    if lateral * math.copysign(1.0, turn) >= 0.0:  # the arc ends on the inside: the corner is wide enough
+        return None
+    wide = exit_line.offset(lateral)
+    begin = max(along, 0.0) + 0.5
+    lanes = _drivable(road_map, body, arc.points)
+    for length in RETURNS:
+        if begin + length > exit_line.length - 1.0:
+            break
+        back = blend(wide, exit_line, begin, begin + length).sub(begin, begin + length + 1.0)
+        line = concat([arc, back])
+        if _on_road(line, body, lanes):
+            return line
+    return None
+
+
+def _arc(start: Point, heading: float, turn: float, radius: float) -> Polyline:
+    """A circular arc from `start` facing `heading`, turning `turn` degrees (positive: right) at `radius`."""
+    side = math.copysign(1.0, turn)
+    fx, fy = heading_vector(heading)
+    rx, ry = fy * side, -fx * side  # towards the centre: right for a right turn
+    cx, cy = start[0] + radius * rx, start[1] + radius * ry
+    steps = max(4, math.ceil(radius * math.radians(abs(turn)) / ARC_STEP))
+    angles = np.radians(np.linspace(0.0, turn, steps + 1))
+    # the point's bearing from the centre, turned with the vehicle (clockwise for a right turn)
+    ox, oy = start[0] - cx, start[1] - cy
+    cos, sin = np.cos(angles), np.sin(angles)
+    return Polyline(np.column_stack([cx + ox * cos + oy * sin, cy - ox * sin + oy * cos]))
+
+
+def _frame(line: Polyline, point: Point) -> tuple[float, float]:
+    """(arc length along `line`, offset right of it) of `point`, the line run straight back before its start."""
+    fx, fy = heading_vector(line.heading(0.0))
+    x0, y0 = line.point(0.0)
+    dx, dy = point[0] - x0, point[1] - y0
+    ahead = dx * fx + dy * fy
+    if ahead < 0.0:
+        return ahead, dx * fy - dy * fx
+    s, _ = line.project(point)
+    px, py = line.point(s)
+    hx, hy = heading_vector(line.heading(s))
+    return s, (point[0] - px) * hy - (point[1] - py) * hx
+
+
+def _drivable(road_map: RoadMap, body: Body, near: np.ndarray) -> list[tuple[np.ndarray, float]]:
+    """(centre line, half width) of every lane the body's class may drive, junction lanes included,
+    whose shape comes within NEAR of the points."""
+    low, high = near.min(axis=0) - NEAR, near.max(axis=0) + NEAR
+    found = []
+    for edge in road_map.net.getEdges(withInternal=True):
+        for lane in edge.getLanes():
+            if not lane.allows(body.vclass):
+                continue
+            shape = np.asarray([p[:2] for p in lane.getShape()], dtype=float)
+            if len(shape) < 2 or (shape.max(axis=0) < low).any() or (shape.min(axis=0) > high).any():
+                continue
+            found.append((shape, lane.getWidth() / 2.0))
+    return found
+
+
+def _on_road(line: Polyline, body: Body, lanes: list[tuple[np.ndarray, float]]) -> bool:
+    """Whether every corner of the body, its front along `line`, lies on one of `lanes`."""
+    at = np.arange(0.0, line.length + 1e-9, CHECK_STEP)
+    corners = np.asarray(
+        [
+            corner
+            for s, heading in zip(at, line.headings(at), strict=True)
+            for corner in Box.of(body, *line.point(float(s)), float(heading)).corners(shrink=LINE_TOLERANCE)
+        ]
+    )
+    covered = np.zeros(len(corners), dtype=bool)
+    for shape, half in lanes:
+        covered |= distances_to(shape, corners) <= half
+        if covered.all():
+            return True
+    return False
