@@ -175,7 +175,8 @@ def _through_junction(
     index = move_at if move_at is not None else -1
     turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map, index)
     entry = drive.line.length
-    own = () if drive.against or move is ActionKind.U_TURN else arm.incoming
+    # a U-turn's or a wrong-way line is laid out, and so is a corner taken wide (its body crosses lane lines)
+    own = () if drive.against or move is ActionKind.U_TURN or drive.wide else arm.incoming
     approach = tuple(lane for lane in own if lane.id in drive.lanes)
     exit_line = exit_corridor.own_line(exit_number)
     joins = exit_line.project(turn.point(turn.length))[0]  # a U-turn may join its lane past the start
@@ -288,10 +289,11 @@ def _junction_line(
     tightest = model(drive.body).limits.path_radius
     if tightest > PLANNED.path_radius and _radius(turn) < CORNER_SLACK * tightest:
         # a corner drawn for a car: a bus or truck swings wide through it, if the road lets it (wide.py)
-        wide = wide_turn(end, heading, corridor.own_line(target.number), drive.body, road_map)
+        wide = wide_turn(drive.line, corridor.own_line(target.number), drive.body, road_map)
         if wide is not None:
-            turn = wide
-            drive.notes.append(f"swings wide through the corner at its {tightest:g} m radius, then back into its lane")
+            drive.line, turn, drive.wide = wide.approach, wide.turn, True
+            drive.lanes.update(wide.lanes)
+            drive.notes.append("swings wide through the junction's corner, then back into its lane")
     drive.lanes.update(_via_lanes(road_map, connection))
     drive.edges.extend(edge for edge in connection.edges if edge not in drive.edges)
     return turn, corridor, target.number

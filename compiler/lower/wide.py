@@ -6,56 +6,82 @@ driver turns from the stop line at the body's own radius and so comes out of the
 the far part of the road it enters (the lane to the left of its exit lane, or the opposing lane of
 a street with one lane each way), then eases back into its exit lane, as buses and trucks do.
 
-`wide_turn` lays that line out: a circular arc of the body's tightest radius from the stop line
-through the turn's whole angle, then a smoothstep back onto the exit lane's centre line over one
-of a few lengths. The shortest return whose body (the plan's box, its front on the line, facing
-along it) stays on lanes the vehicle may drive, every corner within half a lane of one (moved in by
-the oracles' lane-line tolerance), is taken. A corner that even this cannot take stays refused
+`wide_turn` lays that line out: a circular arc from the stop line through the turn's whole angle,
+at the radius of the front bumper's path at full lock or a little wider (the wider, the less its
+trailing rear cuts in), then a smoothstep back onto the exit lane's centre line over one
+of a few lengths. The tightest arc and shortest return whose body (the plan's box, its front on the
+line, facing the way its rear axle trails: geometry/trailing.py) stays on lanes the vehicle may
+drive, every corner within half a lane of one (moved in by the oracles' lane-line tolerance), is
+taken. A corner that even this cannot take stays refused
 (routes.py's corner check), with the reason.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import angle_diff, heading_vector
 from sovarc.compiler.geometry.bodies import Box
 from sovarc.compiler.geometry.polyline import Point, Polyline, blend, concat, distances_to
+from sovarc.compiler.geometry.trailing import trailing_headings
 from sovarc.compiler.maps import RoadMap
 from sovarc.compiler.vehicles import Body, model
 
 RETURNS = (8.0, 11.0, 14.0, 18.0, 23.0, 29.0, 36.0, 44.0)  # m over which the body eases back into its exit lane
+OUTS = (0.0, 1.0, 2.0, 3.0)  # m it moves out to the side away from the turn before the stop line
+SWING = 15.0  # m before the stop line over which it moves out
 ARC_STEP = 0.5  # m between the arc's points
 CHECK_STEP = 0.5  # m between the body poses checked
-NEAR = 15.0  # m around the turn in which the map's lanes are looked at
+NEAR = 25.0  # m around the turn in which the map's lanes are looked at
 MIN_TURN = 30.0  # deg: a gentler bend is no corner
+# the arc's radius, as a share of the front's at full lock: the wider, the less the rear cuts in
+WIDER = (1.0, 1.15, 1.3, 1.5)
+INSIDE = 0.5  # m: an arc ending this far inside its exit lane's centre turns tighter than the lane does
+
+Lane = tuple[str, np.ndarray, float]  # id, centre line, half width
 
 
-def wide_turn(start: Point, heading: float, exit_line: Polyline, body: Body, road_map: RoadMap) -> Polyline | None:
-    """The line from the stop line (`start`, facing `heading`) through a corner at the body's own
-    radius and back onto `exit_line` (the exit lane's centre line, from the junction on); None when
-    the turn is no corner, the corner is wide enough as drawn, or no return keeps the body on the road."""
-    radius = model(body).limits.path_radius
+@dataclass(frozen=True)
+class Wide:
+    approach: Polyline  # the line up to the stop line, its last SWING metres moved out (or as it was)
+    turn: Polyline  # from the stop line through the corner and back into the exit lane
+    lanes: frozenset[str]  # every lane its body covers on the way
+
+
+def wide_turn(approach: Polyline, exit_line: Polyline, body: Body, road_map: RoadMap) -> Wide | None:
+    """The line of a corner taken wide: `approach` (ending at the stop line), moved out before it as
+    far as needed, an arc no tighter than the front's at full lock, and a return onto `exit_line`
+    (the exit lane's centre line, from the junction on). None when the turn is no corner, the
+    corner is wide enough as drawn, or no such line keeps the body on the road."""
+    end = approach.length
+    heading = approach.heading(end)
     turn = angle_diff(exit_line.heading(0.0), heading)  # signed, positive turning right (clockwise)
     if abs(turn) < MIN_TURN:
         return None
-    arc = _arc(start, heading, turn, radius)
-    end = arc.point(arc.length)
-    along, lateral = _frame(exit_line, end)
-    if lateral * math.copysign(1.0, turn) >= 0.0:  # the arc ends on the inside: the corner is wide enough
-        return None
-    wide = exit_line.offset(lateral)
-    begin = max(along, 0.0) + 0.5
-    lanes = _drivable(road_map, body, arc.points)
-    for length in RETURNS:
-        if begin + length > exit_line.length - 1.0:
+    side = math.copysign(1.0, turn)
+    lanes = _drivable(road_map, body, np.vstack([approach.point(end), exit_line.point(0.0)]))
+    for out in OUTS:
+        if out and end < SWING + 1.0:
             break
-        back = blend(wide, exit_line, begin, begin + length).sub(begin, begin + length + 1.0)
-        line = concat([arc, back])
-        if _on_road(line, body, lanes):
-            return line
+        moved = blend(approach, approach.offset(-side * out), end - SWING, end - 1.0) if out else approach
+        before = moved.sub(max(0.0, moved.length - SWING - body.length), moved.length)
+        for share in WIDER:
+            arc = _arc(moved.point(moved.length), heading, turn, share * model(body).front_radius)
+            along, lateral = _frame(exit_line, arc.point(arc.length))
+            if lateral * side > INSIDE:  # it ends inside its exit lane: a wider arc ends further in
+                break
+            wide = exit_line.offset(lateral)
+            begin = max(along, 0.0) + 0.5
+            for length in RETURNS:
+                if begin + length > exit_line.length - 1.0:
+                    break
+                back = blend(wide, exit_line, begin, begin + length).sub(begin, begin + length + 1.0)
+                covered = _on_road(concat([before, arc, back]), body, lanes)
+                if covered is not None:
+                    return Wide(moved, concat([arc, back]), covered)
     return None
 
 
@@ -87,9 +113,9 @@ def _frame(line: Polyline, point: Point) -> tuple[float, float]:
     return s, (point[0] - px) * hy - (point[1] - py) * hx
 
 
-def _drivable(road_map: RoadMap, body: Body, near: np.ndarray) -> list[tuple[np.ndarray, float]]:
-    """(centre line, half width) of every lane the body's class may drive, junction lanes included,
-    whose shape comes within NEAR of the points."""
+def _drivable(road_map: RoadMap, body: Body, near: np.ndarray) -> list[Lane]:
+    """Every lane the body's class may drive, junction lanes included, whose shape comes within NEAR
+    of the points."""
     low, high = near.min(axis=0) - NEAR, near.max(axis=0) + NEAR
     found = []
     for edge in road_map.net.getEdges(withInternal=True):
@@ -99,23 +125,29 @@ def _drivable(road_map: RoadMap, body: Body, near: np.ndarray) -> list[tuple[np.
             shape = np.asarray([p[:2] for p in lane.getShape()], dtype=float)
             if len(shape) < 2 or (shape.max(axis=0) < low).any() or (shape.min(axis=0) > high).any():
                 continue
-            found.append((shape, lane.getWidth() / 2.0))
+            found.append((lane.getID(), shape, lane.getWidth() / 2.0))
     return found
 
 
-def _on_road(line: Polyline, body: Body, lanes: list[tuple[np.ndarray, float]]) -> bool:
-    """Whether every corner of the body, its front along `line`, lies on one of `lanes`."""
+def _on_road(line: Polyline, body: Body, lanes: list[Lane]) -> frozenset[str] | None:
+    """The lanes the body covers, its front along `line`, when each of its corners lies on one of
+    `lanes`; None when one does not."""
     at = np.arange(0.0, line.length + 1e-9, CHECK_STEP)
+    points = line.points_at(at)
+    kind = model(body)
+    facing = trailing_headings(points, line.heading(0.0), kind.axle_reach) if kind.trails else line.headings(at)
     corners = np.asarray(
         [
             corner
-            for s, heading in zip(at, line.headings(at), strict=True)
-            for corner in Box.of(body, *line.point(float(s)), float(heading)).corners(shrink=LINE_TOLERANCE)
+            for (x, y), heading in zip(points, facing, strict=True)
+            for corner in Box.of(body, float(x), float(y), float(heading)).corners(shrink=LINE_TOLERANCE)
         ]
     )
     covered = np.zeros(len(corners), dtype=bool)
-    for shape, half in lanes:
-        covered |= distances_to(shape, corners) <= half
-        if covered.all():
-            return True
-    return False
+    used = set()
+    for lane_id, shape, half in lanes:
+        inside = distances_to(shape, corners) <= half
+        if inside.any():
+            used.add(lane_id)
+            covered |= inside
+    return frozenset(used) if covered.all() else None
