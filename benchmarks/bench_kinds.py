@@ -95,6 +95,17 @@ def cell(rows: list[dict[str, Any]], out: Path, target: str, roads: int) -> tupl
     return f"{passed}/{roads}", reasons
 
 
+def _reasons(cells: list[tuple[str, list[str]]]) -> Counter[str]:
+    """Each miss once: a site not planned (or no site) fails every target for one reason."""
+    found: Counter[str] = Counter()
+    for target, (_, reasons) in zip(TARGETS, cells, strict=True):
+        for reason in reasons:
+            shared = reason.startswith(("not planned", "no site"))
+            if not shared or target == TARGETS[0]:
+                found[f"{'all' if shared else target}: {reason[:150]}"] += 1
+    return found
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("-m", "--map", action="append", type=Path, help="maps (default: built-on, then held-out)")
@@ -126,8 +137,7 @@ def main() -> None:
             for target, (text, _) in zip(TARGETS, cells, strict=True):
                 totals[(why or map_path.name, target)] += int(text.split("/")[0])
             print(f"  {label:<22} " + " ".join(f"{text:<13}" for text, _ in cells))
-            reasons = Counter(f"{t}: {r[:150]}" for t, (_, rs) in zip(TARGETS, cells, strict=True) for r in rs)
-            for reason, count in sorted(reasons.items()):
+            for reason, count in sorted(_reasons(cells).items()):
                 print(f"      {count} x {reason}")
     print(f"\npassed of {len(chosen) * args.roads} per map, summed per map group:", dict(totals))
     print(f"batch folder: {out}")
