@@ -8,7 +8,10 @@ variants (examples/variants) go through `sovarc batch -t all` on every map; the 
 from the batch's manifest and each site's verdict files. One row per scenario and map, one column
 per target: sites passed / sites asked for, then the first reason of each failure. The OpenSCENARIO
 column counts a site as passed only when esmini also played it (set ESMINI, or put esmini on PATH);
-the FMU column when every ego test of the site passes. Without -m: the town and Town01 (the maps
+"fmu ran" counts sites where every vehicle that can be the ego took its turn, and "fmu ego passed"
+those where the reference ego passed each of its tests: a verdict on that driver, not on the
+scenario. Beneath each map: how often the reference ego, meeting a cyclist or a reversing car,
+braked for it (it saw it) and struck it while moving. Without -m: the town and Town01 (the maps
 the moves were built on), then Town02 (held out). Asserts nothing; prints the CPU time per map.
 """
 
@@ -23,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.cli import main as sovarc
+from sovarc.dsl import parse
 
 ROOT = Path(__file__).resolve().parent.parent
 SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
@@ -71,6 +75,39 @@ def _failures(site: Path, target: str) -> list[str]:
         f.get("check") == "player_run" for v in verdicts for f in v.get("findings", [])
     ):
         found.append("esmini did not play it (set ESMINI)")
+    return found
+
+
+def _ego_tests(site: Path) -> list[dict[str, Any]]:
+    path = site / "verdict-fmu.json"
+    return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else []
+
+
+def ran(rows: list[dict[str, Any]], out: Path, roads: int) -> str:
+    """`sites/roads` where the FMU harness ran an ego test for every vehicle that can be one."""
+    done = sum(1 for r in rows if r["planned"] and all(v.get("findings") for v in _ego_tests(out / r["folder"])))
+    return f"{done}/{roads}"
+
+
+def meetings(rows: list[dict[str, Any]], out: Path, source_text: str) -> Counter[str]:
+    """The reference ego, driving, meeting a cyclist or a reversing car: tests, tests where it braked
+    (it saw the other: two-party scenarios have no one else to brake for), and collisions while it moved."""
+    scenario = parse(source_text)
+    others = {p.id: "cyclist" for p in scenario.participants if str(getattr(p.kind, "value", "")) == "bicycle"}
+    others |= {
+        p.id: "reversing car" for p in scenario.participants if any(a.kind.value == "reverse" for a in p.known_actions)
+    }
+    found: Counter[str] = Counter()
+    for row in (r for r in rows if r["planned"]):
+        for test in _ego_tests(out / row["folder"]):
+            facts = test.get("facts", {})
+            for pid, what in others.items():
+                if facts.get("ego") == pid or (facts.get("max_speed") or 0.0) < 0.5:
+                    continue  # it is the other, or a standing ego's test (a car stopped in the way)
+                found[f"{what}: tests"] += 1
+                found[f"{what}: braked for it"] += int((facts.get("peak_braking") or 0.0) > 1.0)
+                hit = facts.get("collision") or {}
+                found[f"{what}: struck it moving"] += int(hit.get("other") == pid and hit.get("ego_speed", 0.0) > 0.5)
     return found
 
 
@@ -130,15 +167,23 @@ def main() -> None:
         rows_here = [r for r in manifest if Path(r["map"]) == map_path]
         cpu = sum({r["task"]: r["cpu_seconds"] or 0.0 for r in rows_here}.values())
         print(f"\n{map_path.name}{', ' + why if why else ''} (CPU {cpu:.0f} s)")
-        print(f"  {'kind / move':<22} " + " ".join(f"{t:<13}" for t in TARGETS))
+        print(f"  {'kind / move':<24} " + " ".join(f"{t:<13}" for t in (*TARGETS[:2], "fmu ran", "fmu ego passed")))
+        met: Counter[str] = Counter()
         for label, name in chosen.items():
             rows = [r for r in rows_here if Path(r["input"]).stem == name]
             cells = [cell(rows, out, t, args.roads) for t in TARGETS]
             for target, (text, _) in zip(TARGETS, cells, strict=True):
                 totals[(why or map_path.name, target)] += int(text.split("/")[0])
-            print(f"  {label:<22} " + " ".join(f"{text:<13}" for text, _ in cells))
+            texts = [cells[0][0], cells[1][0], ran(rows, out, args.roads), cells[2][0]]
+            print(f"  {label:<24} " + " ".join(f"{text:<13}" for text in texts))
+            met += meetings(rows, out, source(name).read_text(encoding="utf-8"))
             for reason, count in sorted(_reasons(cells).items()):
                 print(f"      {count} x {reason}")
+        for what in ("cyclist", "reversing car"):
+            if met[f"{what}: tests"]:
+                tests, braked, struck = (met[f"{what}: {k}"] for k in ("tests", "braked for it", "struck it moving"))
+                print(f"  the reference ego, driving, meets a {what} in {tests} tests: brakes for it in {braked}, "
+                      f"strikes it while moving in {struck}")  # fmt: skip
     print(f"\npassed of {len(chosen) * args.roads} per map, summed per map group:", dict(totals))
     print(f"batch folder: {out}")
 
