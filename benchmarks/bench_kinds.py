@@ -47,7 +47,7 @@ SCENARIOS = {
     "parked, reverse": "straight_back_out_of_parking_rear_end",
     # T-junction variants (examples/variants): the CARLA towns have no four-way crossing
     "truck, right turn out": "t_junction_truck_right_turn_out_side",
-    "bus right turn, cyclist": "t_junction_bus_right_turn_cyclist_side",
+    "bus right turn out, cyclist": "t_junction_bus_right_turn_out_cyclist_side",
     "cyclist, car turns out": "t_junction_cyclist_left_turn_out_side",
 }
 
@@ -167,7 +167,7 @@ def main() -> None:
         rows_here = [r for r in manifest if Path(r["map"]) == map_path]
         cpu = sum({r["task"]: r["cpu_seconds"] or 0.0 for r in rows_here}.values())
         print(f"\n{map_path.name}{', ' + why if why else ''} (CPU {cpu:.0f} s)")
-        print(f"  {'kind / move':<24} " + " ".join(f"{t:<13}" for t in (*TARGETS[:2], "fmu ran", "fmu ego passed")))
+        print(f"  {'kind / move':<28} " + " ".join(f"{t:<13}" for t in (*TARGETS[:2], "fmu ran", "fmu ego passed")))
         met: Counter[str] = Counter()
         for label, name in chosen.items():
             rows = [r for r in rows_here if Path(r["input"]).stem == name]
@@ -175,7 +175,7 @@ def main() -> None:
             for target, (text, _) in zip(TARGETS, cells, strict=True):
                 totals[(why or map_path.name, target)] += int(text.split("/")[0])
             texts = [cells[0][0], cells[1][0], ran(rows, out, args.roads), cells[2][0]]
-            print(f"  {label:<24} " + " ".join(f"{text:<13}" for text in texts))
+            print(f"  {label:<28} " + " ".join(f"{text:<13}" for text in texts))
             met += meetings(rows, out, source(name).read_text(encoding="utf-8"))
             for reason, count in sorted(_reasons(cells).items()):
                 print(f"      {count} x {reason}")

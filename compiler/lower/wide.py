@@ -39,6 +39,8 @@ NEAR = 25.0  # m around the turn in which the map's lanes are looked at
 MIN_TURN = 30.0  # deg: a gentler bend is no corner
 # the arc's radius, as a share of the front's at full lock: the wider, the less the rear cuts in
 WIDER = (1.0, 1.15, 1.3, 1.5)
+SIDE_STEP = 2.0  # m between the points checked along a body's side
+LANE_REACH = 0.5  # m: a lane the body comes this near is one it uses (the oracles allow it the lanes it uses)
 INSIDE = 0.5  # m: an arc ending this far inside its exit lane's centre turns tighter than the lane does
 
 Lane = tuple[str, np.ndarray, float]  # id, centre line, half width
@@ -130,24 +132,28 @@ def _drivable(road_map: RoadMap, body: Body, near: np.ndarray) -> list[Lane]:
 
 
 def _on_road(line: Polyline, body: Body, lanes: list[Lane]) -> frozenset[str] | None:
-    """The lanes the body covers, its front along `line`, when each of its corners lies on one of
-    `lanes`; None when one does not."""
+    """The lanes the body reaches (within LANE_REACH of their area), its front along `line`, when
+    its outline lies on `lanes` throughout; None when it does not."""
     at = np.arange(0.0, line.length + 1e-9, CHECK_STEP)
     points = line.points_at(at)
     kind = model(body)
     facing = trailing_headings(points, line.heading(0.0), kind.axle_reach) if kind.trails else line.headings(at)
-    corners = np.asarray(
-        [
-            corner
-            for (x, y), heading in zip(points, facing, strict=True)
-            for corner in Box.of(body, float(x), float(y), float(heading)).corners(shrink=LINE_TOLERANCE)
-        ]
+    outline = np.vstack(
+        [_outline(Box.of(body, float(x), float(y), float(h))) for (x, y), h in zip(points, facing, strict=True)]
     )
-    covered = np.zeros(len(corners), dtype=bool)
+    covered = np.zeros(len(outline), dtype=bool)
     used = set()
     for lane_id, shape, half in lanes:
-        inside = distances_to(shape, corners) <= half
-        if inside.any():
+        distance = distances_to(shape, outline)
+        covered |= distance <= half
+        if (distance <= half + LANE_REACH).any():
             used.add(lane_id)
-            covered |= inside
     return frozenset(used) if covered.all() else None
+
+
+def _outline(box: Box) -> np.ndarray:
+    """Points around the body, each face moved in by the oracles' tolerance: its corners, and along
+    its long sides every SIDE_STEP (a long body's side may cross a kerb its corners clear)."""
+    front_left, rear_left, rear_right, front_right = (np.asarray(c) for c in box.corners(shrink=LINE_TOLERANCE))
+    u = np.linspace(0.0, 1.0, max(2, math.ceil(box.length / SIDE_STEP) + 1))[:, None]
+    return np.vstack([front_left + u * (rear_left - front_left), front_right + u * (rear_right - front_right)])

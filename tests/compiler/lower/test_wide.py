@@ -23,7 +23,7 @@ from sovarc.targets.sumo.on_road import on_road
 
 from tests.conftest import EXAMPLES, SHARED, requires_shared
 
-BUS_RIGHT = EXAMPLES / "variants" / "t_junction_bus_right_turn_cyclist_side.sov"
+BUS_RIGHT = EXAMPLES / "variants" / "t_junction_bus_right_turn_out_cyclist_side.sov"
 TOWN02 = SHARED / "data" / "opendrive" / "carla" / "Town02.xodr"
 
 
