@@ -1,19 +1,21 @@
 """A heavy vehicle's corner: it swings wide where the junction's connection is drawn for a car.
 
 SUMO draws a junction's connections for cars: a right turn at a town or CARLA corner bends at a
-5.5-8 m radius, and a bus or truck (the vehicle model's tightest bend, 9 m) cannot follow it. Its
-driver turns from the stop line at the body's own radius and so comes out of the corner wide, in
-the far part of the road it enters (the lane to the left of its exit lane, or the opposing lane of
-a street with one lane each way), then eases back into its exit lane, as buses and trucks do.
+5.5-8 m radius, tighter than a bus or truck can follow (the vehicle model's tightest bend, 9 m, and
+11.5 m for a bus's front at full lock). Its driver moves out away from the turn before the stop line
+(into the lane beside, or the opposing lane of a street with one lane each way), turns wider than
+the corner, comes out of it in the far part of the road it enters, and eases back into its exit
+lane, as buses and trucks do.
 
-`wide_turn` lays that line out: a circular arc from the stop line through the turn's whole angle,
-at the radius of the front bumper's path at full lock or a little wider (the wider, the less its
-trailing rear cuts in), then a smoothstep back onto the exit lane's centre line over one
-of a few lengths. The tightest arc and shortest return whose body (the plan's box, its front on the
-line, facing the way its rear axle trails: geometry/trailing.py) stays on lanes the vehicle may
-drive, every corner within half a lane of one (moved in by the oracles' lane-line tolerance), is
-taken. A corner that even this cannot take stays refused
-(routes.py's corner check), with the reason.
+`wide_turn` lays that line out: the approach's last SWING metres moved out by one of OUTS; from the
+stop line, a circular arc through the turn's whole angle at the radius of the front's path at full
+lock or a little wider (the wider, the less its trailing rear cuts in); then a smoothstep back onto
+the exit lane's centre line over one of RETURNS. The first line, least moved out, tightest and
+shortest, whose body stays on lanes the vehicle may drive is taken: the plan's box, its front on
+the line and facing the way its rear axle trails (geometry/trailing.py), its corners and points
+along its sides each within half a lane of one (moved in by the oracles' lane-line tolerance). The
+lanes it comes near are its to use. A corner that even this cannot take stays refused (routes.py's
+corner check), saying so.
 """
 
 from __future__ import annotations
@@ -73,8 +75,8 @@ def wide_turn(approach: Polyline, exit_line: Polyline, body: Body, road_map: Roa
         for share in WIDER:
             arc = _arc(moved.point(moved.length), heading, turn, share * model(body).front_radius)
             along, lateral = _frame(exit_line, arc.point(arc.length))
-            if lateral * side > INSIDE:  # it ends inside its exit lane: a wider arc ends further in
-                break
+            if lateral * side > INSIDE:  # it ends inside its exit lane, turning tighter than the lane
+                continue
             wide = exit_line.offset(lateral)
             begin = max(along, 0.0) + 0.5
             for length in RETURNS:
