@@ -71,11 +71,13 @@ def run_map(name: str, path: Path, scenarios: list[tuple[Path, object]], args: a
 
 
 # Why a scenario-site failed to plan, by what its reason says: the map lacks the kind or a site that
-# fits (a truthful miss), a site that fits cannot host the crash, or the record contradicts itself.
+# fits (a truthful miss), the record contradicts itself, a site that fits only clamped (too few lanes,
+# a move with no connection) cannot host it, or a site that fits cannot host the crash.
 PLANNING = (
     ("map lacks the kind", ("has no ",)),
     ("no site fits", ("no site of ", "fewer fitting sites than asked", "none of its")),
     ("record contradicts itself", ("no road can stage it",)),
+    ("site fits only clamped", ("the site fits only clamped",)),
     ("site cannot host it", ("",)),
 )
 

@@ -90,12 +90,41 @@ def backing_at(plan: Plan, participant: str, time: float) -> bool:
     return bool(moving) and moving[-1] < 0.0
 
 
+def struck_face(zone: tuple[str, ...], pressed: str | None, angle: float, backing: bool = False) -> str:
+    """The one face of the victim the striker enters by, at a touch on the victim's `zone` (one face,
+    or the two of a corner) with `angle` degrees between the headings.
+
+    At a corner the geometry of the touch decides. Where the striker's corner (or face) enters a face
+    of the victim square (`pressed`: the contact pushes along that face's own normal), that face is
+    struck: a corner beside the victim meets its side, one behind it its rear. Where it is the
+    victim's corner that enters the striker's leading face, both of the corner's faces meet it, and
+    the way the bodies are turned decides: the corner's end (front or rear) is struck when the
+    striker heads as the crash type naming that end allows (its rear by a striker within 45 degrees
+    of its heading: a car turning off the lane with its rear corner still in the follower's way is
+    struck from behind; its front by one 100 degrees or more apart), else its side."""
+    if len(zone) == 1:
+        return zone[0]
+    if pressed is not None:
+        return pressed
+    end, side = zone
+    faces = BACKING_FACES if backing else VICTIM_FACES
+    kind = next(k for k in (CrashType.REAR_END, CrashType.FRONTAL) if faces[k] == (end,))
+    lo, hi = CRASH_ANGLES[kind.value]
+    return end if lo <= angle <= hi else side
+
+
+def victim_face(contact: Contact, backing: bool = False) -> str:
+    """The face of the victim (the contact's second body) its striker enters by (`struck_face`)."""
+    return struck_face(contact.zones[1], contact.pressed[1], contact.angle, backing)
+
+
 def fits(kind: CrashType, contact: Contact, backing: bool = False) -> bool:
     """Whether the striker's leading face (its front; its rear when `backing`) meets the face of the
-    victim the crash type names, at an angle between the headings the type allows (side: any)."""
-    s_zone, v_zone = contact.zones
+    victim the crash type names (the one it enters by, at a corner), at an angle between the headings
+    the type allows (side: any)."""
+    s_zone = contact.zones[0]
     lead, faces = ("rear", BACKING_FACES[kind]) if backing else ("front", VICTIM_FACES[kind])
-    ok = lead in s_zone and any(face in v_zone for face in faces)
+    ok = lead in s_zone and victim_face(contact, backing) in faces
     if kind is CrashType.REAR_END:
         return ok and contact.angle <= REAR_END_MAX_ANGLE
     if kind is CrashType.FRONTAL:
@@ -108,6 +137,11 @@ def face_words(zone: tuple[str, ...]) -> str:
     if len(zone) == 2:
         return f"{zone[0]}-{zone[1]} corner"
     return f"{zone[0]} side" if zone[0] in {"left", "right"} else zone[0]
+
+
+def struck_words(zone: tuple[str, ...], struck: str) -> str:
+    """The victim's faces at the touch, and at a corner the one struck: 'rear-left corner, struck on its rear'."""
+    return face_words(zone) if len(zone) == 1 else f"{face_words(zone)}, struck on its {face_words((struck,))}"
 
 
 def needs(kind: CrashType, striker: str, victim: str, backing: bool = False) -> str:

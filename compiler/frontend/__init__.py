@@ -33,7 +33,7 @@ from sovarc.compiler.frontend.providers import make_provider
 from sovarc.compiler.frontend.providers.base import Provider
 from sovarc.compiler.frontend.refusals import refuse
 from sovarc.compiler.frontend.rules import extract
-from sovarc.compiler.frontend.text import check_narrative, naming_note, number_vehicles, unrepresented
+from sovarc.compiler.frontend.text import check_narrative, prepare_report, unrepresented
 from sovarc.dsl import Scenario
 from sovarc.dsl.ir import Provenance, Unknown
 from sovarc.dsl.span import Source
@@ -89,13 +89,14 @@ class FrontEnd:
 
     def extract(self, source: Source) -> Extraction:
         check_narrative(source.text, source.name)
-        refuse(source.text, source.name)
-        if refusal := partner_refusal(number_vehicles(source.text)):
+        prepared = prepare_report(source.text)  # the naming, once for the refusals, the rules and the note
+        refuse(source.text, source.name, prepared.named)
+        if refusal := partner_refusal(prepared.labelled, prepared.note):
             raise FrontEndError(f"{source.name}: {refusal}; nothing to extract")
-        rules = extract(source.text, scenario_name(source.name), source.name)
+        rules = extract(source.text, scenario_name(source.name), source.name, prepared)
         notes = unrepresented(source.text)
-        if note := naming_note(source.text):
-            notes = [note, *notes]
+        if prepared.note:
+            notes = [prepared.note, *notes]
         if not rules.participants:
             raise FrontEndError(
                 f"{source.name}: the report names no vehicle or pedestrian (looked for V1, Vehicle #1, "

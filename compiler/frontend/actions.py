@@ -48,7 +48,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.PARKED,
         re.compile(
-            r"\bparked\b|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
+            # (not "parked" said of other road users: "rows of parked cars", "vehicles parked at the curb")
+            r"(?<!\bvehicles )(?<!\bcars )(?<!\btrucks )\bparked\b"
+            r"(?! (?:[a-z]+ )?(?:cars|vehicles|trucks|vans|suvs|buses|motorcycles|bikes|bicycles|trailers)\b)"
+            r"|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
             r"|parallel[- ]parking (?:space|spot))",
             re.I,
         ),
@@ -58,7 +61,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
     (
         ActionKind.CHANGE_LANE,
-        re.compile(r"\bchang(?:e|ed|es|ing) lanes?\b|\blane change\b|\bmerg(?:e|ed|es|ing)\b", re.I),
+        re.compile(r"\b(?:chang|switch)(?:e|ed|es|ing)? lanes?\b|\blane[- ]chang\w*|\bmerg(?:e|ed|es|ing)\b", re.I),
     ),
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,
@@ -73,8 +76,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.RETROGRADE,
         re.compile(
-            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re) ?line)|\bleft of cent(?:er|re)\b"
-            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re) ?line)"
+            # the line between the directions, however it is named: "the center lane line", "the centre divider"
+            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
+            r"|\bleft of cent(?:er|re)\b"
+            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
             r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side|direction)\b"
             r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
             r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
@@ -143,7 +148,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
             r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
-            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b",
+            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
+            r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
             re.I,
         ),
     ),
@@ -425,7 +432,9 @@ def read_actions_at(
 ) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
-    if not any(_DESCRIBED.search(p.text) for p in pieces):  # never described before the impact: not known,
+    # (a piece in which any action is read describes it: "V2 behind it was switching lanes")
+    shown = any(_DESCRIBED.search(p.text) or any(x.search(what_was_done(p.text)) for _, x in _PATTERNS) for p in pieces)
+    if not shown:  # never described before the impact: not known,
         # unless its front made the impact and it is said to be moving ("V2 following behind V1 struck ...")
         moving = next((p.at + m.start() for p in pieces if (m := _MOVING_STRIKER.search(p.text))), None)
         if struck_first and moving is not None:
@@ -501,7 +510,7 @@ def read_actions_at(
     if (not ordered or ordered[0].kind not in _STANDING or moved_first) and not manoeuvre_first:
         ordered.insert(0, Action(ActionKind.FOLLOW_LANE))
         # read where it was shown moving, else where it was first described
-        described = next(p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text)))
+        described = next((p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text))), pieces[0].at)
         where.insert(0, moving_at if moving_at is not None else described)
     return tuple(ordered), tuple(where)
 

@@ -17,8 +17,10 @@ from dataclasses import dataclass
 
 # Words right before a participant's name that make it an object, not the subject of what follows.
 _OBJECT_BEFORE = re.compile(
-    r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|toward|towards|into|past|struck|hit|impacted|contacted|"
-    r"striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|pass|passed|passing|"
+    # (a preposition's object: "parked perpendicular to V1", "away from V1")
+    r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|to|from|toward|towards|into|onto|past|near|against|"
+    r"struck|hit|impacted|contacted|striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|"
+    r"detected|detecting|pass|passed|passing|"
     r"followed|following|around|alongside|beside|next to|approached|approaching|overtook|overtaking)|'s) "
     r"(?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
     re.IGNORECASE,
@@ -66,6 +68,13 @@ _SCENE = re.compile(
     re.IGNORECASE,
 )
 _NAME = re.compile(r"\b[VP]\d\b")
+# An opening participle with no subject of its own ("While attempting to pass V1, V2 made contact", "After
+# stopping, V2 began moving"): English gives it the subject of the clause it opens.
+_OPENING_PARTICIPLE = re.compile(
+    r"^(?:(?:while|when|after|before|upon|on|since|once|just after|just before) )?(?:\w+ly )?"
+    r"(?!(?:during|including|regarding|according|concerning|following|considering|pending)\b)[a-z]+ing\b[^,;.]*, ",
+    re.IGNORECASE,
+)
 
 
 @dataclass(frozen=True)
@@ -122,10 +131,20 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
         events = _events(sentence, ids, others)
         who, start = (() if _SCENE.match(sentence) else carry), 0
         for at, whom in list(events):
+            # other road users said in a "with" phrase ("with vehicles parked at the curb, and came to a stop")
+            # are an aside: the subject's clause resumes after it
+            aside = not whom and re.search(r"\bwith (?:\w+ ){0,2}$", sentence[:at])
+            if aside and (comma := sentence.find(",", at)) >= 0:
+                events.append((comma + 1, next((w for a, w in reversed(events) if a < at and w), carry)))
+                continue
             if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
                 back = next((w for a, w in reversed(events) if a < at and w), carry)
                 events.append((end.end(), back))
         events.sort()
+        opening = _OPENING_PARTICIPLE.match(sentence)
+        main = next(((a, w) for a, w in events if w and opening and a >= opening.end()), None)
+        if opening and main and main[0] == opening.end() and not any(a < main[0] for a, _ in events):
+            who = main[1]
         for at, whom in events:
             if at > start and sentence[start:at].strip():
                 out.append(Piece(who, sentence[start:at], offset + start, index, sentence))

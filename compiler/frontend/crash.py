@@ -21,9 +21,17 @@ _WORD = (
     r"cab|hood|grille|headlights?|trunk|tailgate|taillights?|hatch)"
 )
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
+# A verb of motion into a road user or a part of one is a strike: "reversed at low speed into the rear bumper of
+# V1", "backed into V1", "rode into the front bumper of V1" (not "drove into the intersection", "into V1's lane").
+MOVED_INTO = (
+    r"(?:back(?:ed|ing)|revers(?:ed|ing)|roll(?:ed|ing)|rode|riding|drove|driving|ran|running|collided|colliding"
+    r"|crashed|crashing|slid|sliding|moved|moving)(?: [\w-]+){0,8}? into"
+    r"(?= (?:the |its |his |her )?(?:(?:stationary|stopped|parked) )?[VP]\d\b(?!'s (?:lane|path))"
+    r"| (?:the |its |his |her |[VP]\d's )?" + _PART + r"\b(?! (?:lane|path)))"
+)
 _STRIKE = (
     r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?)"
+    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?|" + MOVED_INTO + ")"
 )
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
@@ -37,7 +45,7 @@ _OWNED = [
     # (not "passed V1 on the left": a bare side after a verb that is no strike is where it passed)
     re.compile(
         r"\b(?P<v>" + _V + r")(?: was| were)?(?: \w+ed)? (?:in|on) (?:the |its |his |her )?"
-        r"(?P<part>(?!(?:left|right)\b(?![- ]" + _WORD + r"))" + _PART + r")\b",
+        r"(?P<part>(?!(?:left|right)\b(?![- ]" + _WORD + r"))(?!front of\b)" + _PART + r")\b",
         re.I,
     ),
 ]
@@ -140,13 +148,22 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
     return sorted(set(parts))
 
 
-def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, CrashType]]) -> str | None:
+def _leads(who: str, kind: CrashType, backing: frozenset[str]) -> bool:
+    """Whether the part is the end its vehicle moved with: the front, or the rear of one backing."""
+    return kind is (CrashType.REAR_END if who in backing else CrashType.FRONTAL)
+
+
+def _striker(
+    sentence: str, subject: str | None, parts: list[tuple[int, str, CrashType]], backing: frozenset[str]
+) -> str | None:
     if agent := _AGENT.search(sentence) or _AGENT_OWNED.search(sentence):
         return agent.group("v")
+    leading = [who for _, who, kind in parts if _leads(who, kind, backing)]
+    led = {who for _, who, kind in parts if not _leads(who, kind, backing)}
+    if len(set(leading)) == 1 and led and leading[0] not in led:  # a leading end met the other's side or end
+        return leading[0]
     fronts = [who for _, who, kind in parts if kind is CrashType.FRONTAL]
     others = {who for _, who, kind in parts if kind is not CrashType.FRONTAL}
-    if len(set(fronts)) == 1 and others and fronts[0] not in others:  # a front met the other's side or rear
-        return fronts[0]
     # "V2 ... made contact with the front of V1": the only part named is the object's front, so the front
     # that met the other is the object's (a front-to-front meeting would name both fronts, or say head-on);
     # not when the subject's own part is said in words not tied to it ("his vehicle's right front", "with its")
@@ -154,7 +171,8 @@ def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, Cra
     said = hit and (_UNTIED_PART.search(sentence[: hit.start()]) or _OWN_PART.search(sentence))
     if hit and not said and not others and len(set(fronts)) == 1 and all(at > hit.end() for at, _, _ in parts):
         named = [n.group() for n in re.finditer(r"\b" + _V + r"\b", sentence[: hit.start()])]
-        if named and named[-1] != fronts[0] and not _HEAD_ON.search(sentence):
+        # (a subject backing into the object's front met it with its rear: it is the striker, below)
+        if named and named[-1] != fronts[0] and named[-1] not in backing and not _HEAD_ON.search(sentence):
             return fronts[0]
     for m in _ACTIVE.finditer(sentence):  # the subject of an active strike: the last one named before it
         named = [n for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)]
@@ -170,7 +188,7 @@ def _striker(sentence: str, subject: str | None, parts: list[tuple[int, str, Cra
 
 def _subject_like(sentence: str, name: re.Match[str]) -> bool:
     """A name that can be the subject of a strike: not an object ("pass V2"), except as "the front of V2"."""
-    owner = re.search(r"\b" + _PART + r" of (?:the )?$", sentence[: name.start()], re.I)
+    owner = re.search(r"(?<!\bin )\b" + _PART + r" of (?:the )?$", sentence[: name.start()], re.I)  # not "in front of"
     return owner is not None or not is_object(sentence, name.start())
 
 
@@ -204,9 +222,12 @@ def _bodies(sentence: str, subject: str | None, tower: str | None) -> str:
     return _THE_BODY.sub(tower, sentence) if tower is not None else sentence
 
 
-def read_sentence(sentence: str, carry: str | None = None, tower: str | None = None) -> Crash | None:
+def read_sentence(
+    sentence: str, carry: str | None = None, tower: str | None = None, backing: frozenset[str] = frozenset()
+) -> Crash | None:
     """The crash one sentence states, or None; `carry` is whom the sentence's pronouns mean when it names
-    no participant before them, `tower` the participant the report says tows a trailer."""
+    no participant before them, `tower` the participant the report says tows a trailer, `backing` those
+    backing at the impact, which lead with their rear (see `_backed`)."""
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
     # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
@@ -218,7 +239,7 @@ def read_sentence(sentence: str, carry: str | None = None, tower: str | None = N
     if m := _REAR_ENDED.search(sentence):
         return Crash(CrashType.REAR_END, m.group("a"), m.group("b"))
     parts = _parts(sentence, subject)
-    striker = _striker(sentence, subject, parts)
+    striker = _striker(sentence, subject, parts, backing)
     head_on = _HEAD_ON.search(sentence) is not None
     if striker is None:
         if head_on:
@@ -227,7 +248,7 @@ def read_sentence(sentence: str, carry: str | None = None, tower: str | None = N
     victims = [(who, kind) for _, who, kind in parts if who != striker]
     if victims:
         victim, kind = victims[0]
-        return Crash(CrashType.FRONTAL if head_on else kind, striker, victim)
+        return Crash(CrashType.FRONTAL if head_on else _backed(kind, striker in backing), striker, victim)
     others = [n for n in names if n != striker]
     victim = others[0] if others else (subject if subject != striker else None)
     if victim is None:  # a single vehicle that struck something with its front ("struck a tree with its front")
@@ -244,6 +265,15 @@ def read_sentence(sentence: str, carry: str | None = None, tower: str | None = N
     if kind is None and "rear-ended" in sentence.lower():
         kind = CrashType.REAR_END
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)
+
+
+def _backed(part: CrashType, backing: bool) -> CrashType:
+    """The crash type when the victim's `part` was met: for a striker backing, which leads with its rear, the
+    IR's type reads with front and rear swapped (its rear into the victim's front is `rear_end`, into its rear
+    `frontal`; a side stays a side), as the lowering and every oracle read it."""
+    if not backing or part is CrashType.SIDE:
+        return part
+    return CrashType.REAR_END if part is CrashType.FRONTAL else CrashType.FRONTAL
 
 
 def _said_part(sentence: str) -> CrashType | None:
@@ -274,12 +304,15 @@ def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash
     return read_crash_at(sents, impact, carry)[0]
 
 
-def read_crash_at(sents: list[str], impact: int, carry: str | None = None) -> tuple[Crash, int]:
-    """`read_crash`, and the index of the sentence it was read from (-1: none)."""
+def read_crash_at(
+    sents: list[str], impact: int, carry: str | None = None, backing: frozenset[str] = frozenset()
+) -> tuple[Crash, int]:
+    """`read_crash`, and the index of the sentence it was read from (-1: none); `backing` as for
+    `read_sentence`."""
     order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
     tower = towing(sents)
     for i in order:
-        crash = read_sentence(sents[i], carry if i == impact else None, tower)
+        crash = read_sentence(sents[i], carry if i == impact else None, tower, backing)
         if crash is not None:
             return _pushed_into_v1(sents[i], crash, tower), i
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:

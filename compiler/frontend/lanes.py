@@ -79,7 +79,15 @@ _TARGETS = (
     re.compile(r"\b(?:to|toward) the " + _SIDE + r"\b(?! of\b)", re.I),
     # "around the left side of V1", "passing V1 on the left": the side it went by on
     re.compile(r"\baround (?:the )?" + _SIDE + r"\b|\bon (?:the |its )?" + _SIDE + r"(?: side)?\b(?! of\b)", re.I),
+    # "around V1 using the left turn lane", "by way of the right lane": the lane it went by
+    re.compile(
+        r"\b(?:using|via|through|by way of) (?:the |an? )?(?:[\w-]+ ){0,2}?" + _SIDE + r"\b(?:[- ][\w-]+){0,2}? lane\b",
+        re.I,
+    ),
+    # "around the passenger side of V1": in a car driven from the left, the driver's side is its left
+    re.compile(r"\baround (?:the )?(driver|passenger)(?:'?s'?)?[- ]side\b", re.I),
 )
+_CAR_SIDE = {"driver": "left", "passenger": "right"}
 _ORIGIN = re.compile(
     r"\b(?:in|from|within) (?:the |its )?(?:adjacent )?" + _SIDE + r"\b(?:[- ](?:adjacent|travel|through|\w+bound))*"
     r" lanes?\b",
@@ -98,6 +106,7 @@ def lane_change_side(text: str, start: int, end: int, said_before: str) -> str |
     window = text[start : max(end, start + 80)]
     for pattern in _TARGETS:
         if m := pattern.search(window):
-            return next(g for g in m.groups() if g).lower()
+            side = next(g for g in m.groups() if g).lower()
+            return _CAR_SIDE.get(side, side)
     origins = [m.group(1).lower() for m in _ORIGIN.finditer(said_before + " " + window)]
     return _OTHER_SIDE[origins[-1]] if origins else None

@@ -18,7 +18,7 @@ from sovarc.compiler.frontend.sentences import sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
-_MODS = r"(?:" + _STOP + r"[\w.'-]+ ){0,3}?"
+_MODS = r"(?:" + _STOP + r"[\w.'-]+\s+){0,3}?"  # (a line may break inside the phrase)
 # Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle).
 _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
@@ -29,7 +29,7 @@ _KINDS = (
 _PEOPLE = frozenset(("pedestrian",))
 # A kind's noun that modifies another names a place or a thing, not a road user: "the bike lane", "a bus stop".
 _NOT_USER = r"(?! (?:lanes?|paths?|routes?|stops?|shelters?|stations?|racks?|wash|park|parking|share|corrals?)\b)"
-_USER = re.compile(r"\b(?:an?|the|another|one) " + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER, re.I)
+_USER = re.compile(r"\b(?:an?|the|another|one)\s+" + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER, re.I)
 _OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist|driver)\b", re.I)
 
 # The automated vehicle: "a Waymo Autonomous Vehicle", "the Waymo AV", "the Cruise AV", "the ADS vehicle",
@@ -71,7 +71,7 @@ _THING = re.compile(
 def _replace_phrase(text: str, phrase: str, pid: str) -> str:
     """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id."""
     return re.sub(
-        r"\b(?:an?|the|another|that|this) " + _MODS + re.escape(phrase) + r"\b(?![\w-])" + _NOT_USER,
+        r"\b(?:an?|the|another|that|this)\s+" + _MODS + re.escape(phrase) + r"\b(?![\w-])" + _NOT_USER,
         pid,
         text,
         flags=re.I,
@@ -127,8 +127,11 @@ def _automated(text: str) -> tuple[str, str] | None:
         text = re.sub(r"\b(?:an?|the) [A-Z][\w.]* (?:vehicle|car|truck|shuttle)\b(?=\s*\(\"?V1\"?\))", "V1", text)
     if brand is not None and (first is None or brand.start() < first.start() or brand.group(1) in said):
         said = brand.group() if first is None else said
+        # with whatever words qualify it: "a stopped Zoox vehicle", "the unoccupied Zoox vehicle"
         text = re.sub(
-            r"\b(?i:an?|the)(?: subject| test)? " + re.escape(f"{brand.group(1)} {brand.group(2)}") + r"\b", "V1", text
+            r"\b(?i:an?|the)(?: [a-z][\w-]*){0,2}? " + re.escape(f"{brand.group(1)} {brand.group(2)}") + r"\b",
+            "V1",
+            text,
         )
     text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
     return text, said
@@ -137,6 +140,14 @@ def _automated(text: str) -> tuple[str, str] | None:
 # Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle".
 _SAME = {"passenger vehicle": "passenger car", "pick-up truck": "pickup truck", "sport utility vehicle": "suv"}
 _SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Following)\b[^,]*, ", re.I)
+
+
+# A road user introduced by its make, as what a strike met or was made by: "by a red Toyota", "struck a Honda
+# Civic" (capitalised and not an acronym, which would be a system's name: "an ADS").
+_MAKE = re.compile(
+    r"\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into)\s+(?P<words>(?:an?|another)\s+"
+    r"(?:[a-z][\w-]*\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
+)
 
 
 def _head(m: re.Match[str]) -> str:
@@ -161,7 +172,11 @@ def _others(text: str) -> list[tuple[str, str]]:
             return users
         if other := _OTHER.search(sentence):  # "the other driver made contact with V1": a vehicle, unnamed
             return [("vehicle", other.group())]
-        before = [m for s in sents[:i] for m in _USER.finditer(s)]
+        if make := _MAKE.search(sentence):  # "struck from behind by a red Toyota": a make names a vehicle
+            return [(make.group(1), make.group("words"))]
+        # else the last road user introduced before it: "a passenger car", not "the vehicle", which points back to
+        # one already named (the automated vehicle itself, often)
+        before = [m for s in sents[:i] for m in _USER.finditer(s) if not m.group().lower().startswith("the ")]
         return [(_head(before[-1]), before[-1].group())] if before else []
     return []
 
@@ -218,10 +233,10 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     return text, note, words_of
 
 
-def partner_refusal(text: str) -> str | None:
+def partner_refusal(named: str, note: str | None) -> str | None:
     """Why a report numbered by rule cannot be read: its automated vehicle hit something the IR has no role
-    for ("a pole", "an animal") and no road user; None when it can be."""
-    named, note = label_parties(text)
+    for ("a pole", "an animal") and no road user; None when it can be. `named` and `note` are what `parties`
+    made of the report."""
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
     for sentence in sentences(named):

@@ -33,8 +33,9 @@ _OTHER_CRASH = re.compile(
 )
 
 
-def refuse(text: str, name: str) -> None:
-    """Raise FrontEndError when the text is not one report of one crash."""
+def refuse(text: str, name: str, named: str | None = None) -> None:
+    """Raise FrontEndError when the text is not one report of one crash; `named` is its prepared text, when the
+    caller has it."""
     if len(_OPENING.findall(text)) > 1 or _blocks_with_impacts(text) > 1:
         raise FrontEndError(
             f"{name}: the file holds more than one report (each report opens with its own date and time, or "
@@ -45,7 +46,7 @@ def refuse(text: str, name: str) -> None:
             f"{name}: the report describes several crashes ('{m.group()}'); a scenario holds one crash: give "
             "each crash its own report; nothing to extract"
         )
-    named = prepare(text)
+    named = prepare(text) if named is None else named
     # (a text that names no road user at all gets the front end's own refusal, which says what it looked for)
     if re.search(r"\b[VP]\d\b", named) and first_impact(sentences(named)) < 0 and not says_impact(text):
         raise FrontEndError(

@@ -20,15 +20,14 @@ from sovarc.compiler.frontend.crash import read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
-from sovarc.compiler.frontend.names import parties
 from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.text import (
+    Prepared,
     describes_impact,
     first_impact,
     impact_clause,
-    number_vehicles,
     participants,
-    prepare,
+    prepare_report,
     sentences,
 )
 from sovarc.dsl.ir import (
@@ -368,9 +367,11 @@ def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     return actions[: stops[-1] + 1] if stops else (*actions, Action(ActionKind.STOP))
 
 
-def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
-    """A scenario from a report's text by rules alone."""
-    named = prepare(text)
+def extract(text: str, name: str, report_path: str | None = None, prepared: Prepared | None = None) -> Scenario:
+    """A scenario from a report's text by rules alone; `prepared` is the report's `prepare_report`, when the
+    caller has made it."""
+    prepared = prepare_report(text) if prepared is None else prepared
+    named = prepared.named
     sents = sentences(named)
     impact = first_impact(sents)
     # A pedestrian first named after the first impact was met in a later one, which the IR does not hold.
@@ -450,9 +451,12 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
-    people = _with_kinds(people, text, named, spots)
+    people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
+    if crash_at >= 0 and (backers := _backing(people)):
+        # read again knowing who backed: its rear is the end it moved with (see `crash.read_sentence`)
+        crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
     environment, found = read_environment(named)
@@ -474,6 +478,11 @@ def extract(text: str, name: str, report_path: str | None = None) -> Scenario:
     return keep_stated(scenario)
 
 
+def _backing(people: list[Participant]) -> frozenset[str]:
+    """The vehicles backing at the impact: their last action is the reverse."""
+    return frozenset(p.id for p in people if p.known_actions and p.known_actions[-1].kind is ActionKind.REVERSE)
+
+
 def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     """A vehicle backing into the impact leads with its rear. The crash readers take a front for the striking
     face, so "the rear of V2 struck the front of V1" reads as V1's front into V2's rear: the faces of a rear-end
@@ -481,19 +490,16 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     if crash.type is not CrashType.REAR_END or not isinstance(crash.striker, str) or not isinstance(crash.victim, str):
         return crash
 
-    def backing(pid: str) -> bool:
-        q = next((p for p in people if p.id == pid), None)
-        return q is not None and bool(q.known_actions) and q.known_actions[-1].kind is ActionKind.REVERSE
-
-    if backing(crash.victim) and not backing(crash.striker):
+    backers = _backing(people)
+    if crash.victim in backers and crash.striker not in backers:
         return replace(crash, striker=crash.victim, victim=crash.striker)
     return crash
 
 
-def _with_kinds(people: list[Participant], text: str, named: str, spots: list[Spot]) -> list[Participant]:
+def _with_kinds(people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]) -> list[Participant]:
     """Each vehicle with the kind the report names it by (see `kinds`), and where that was read: the noun of
-    an appositive, or the participant's first mention, where the words it was named by were."""
-    kinds = stated_kinds(named, parties(number_vehicles(text))[2])
+    an appositive, or the participant's first mention, where the words it was named by (`words`) were."""
+    kinds = stated_kinds(named, words)
     out = []
     for p in people:
         kind, span = kinds.get(p.id, (None, None))

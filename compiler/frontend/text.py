@@ -4,9 +4,11 @@ naming, sentences, and the cut at the first impact."""
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
 
 from sovarc.compiler.frontend.choice import FrontEndError
-from sovarc.compiler.frontend.names import label_parties
+from sovarc.compiler.frontend.crash import MOVED_INTO
+from sovarc.compiler.frontend.names import parties
 from sovarc.compiler.frontend.sentences import sentences
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
@@ -21,12 +23,14 @@ _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
-    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended)\b",
+    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended"
+    r"|" + MOVED_INTO + r")\b",
     re.IGNORECASE,
 )
-# An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle".
+# An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle"; one
+# that could not be avoided is one ("was unable to avoid contact with V2").
 _NO_IMPACT = re.compile(
-    r"\b(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
+    r"\b(?<!unable to )(?<!failed to )(?<!not )(?<!n't )(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:collision|impact|contact|crash|striking|hitting)\b"
     r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
     r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b",  # what held then, not the meeting
@@ -126,15 +130,28 @@ def name_parked(text: str) -> str:
     return text.replace(m.group(), f"V{max(taken, default=0) + 1}, {m.group()},", 1)
 
 
-def prepare(text: str) -> str:
+@dataclass(frozen=True)
+class Prepared:
+    """A report ready to read, and how its participants were named: computed once per report (`prepare_report`)
+    and handed to whatever needs the naming (the refusals, the rules, the kinds, the user's note)."""
+
+    named: str  # every participant under one name: the text the readers read
+    labelled: str  # the parties numbered or labelled only (before makes, cyclists and a parked victim)
+    note: str | None  # how they were numbered, when the report does not number them itself
+    words: dict[str, str] = field(default_factory=dict)  # the words each party numbered here was first named by
+
+
+def prepare_report(text: str) -> Prepared:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
-    that name none: see `names`), makes and body words, an unnumbered parked victim."""
-    return name_parked(resolve_aliases(normalize_names(label_parties(number_vehicles(text))[0])))
+    that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
+    the words each party numbered by rule was named by."""
+    labelled, note, words = parties(number_vehicles(text))
+    return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
 
-def naming_note(text: str) -> str | None:
-    """How the participants were numbered when the report does not number them itself."""
-    return label_parties(number_vehicles(text))[1]
+def prepare(text: str) -> str:
+    """The text of `prepare_report`."""
+    return prepare_report(text).named
 
 
 def participants(text: str) -> list[str]:

@@ -21,6 +21,7 @@ from sovarc.compiler.vehicles import Body
 Point = tuple[float, float]
 FACES = ("front", "rear", "left", "right")
 OVERLAP_EPS = 1e-9  # m: boxes must reach this far into each other to overlap (rounding is not contact)
+SQUARE = 1e-12  # a contact's direction this close to a face's outward normal is that face's own
 
 
 @dataclass(frozen=True)
@@ -82,6 +83,13 @@ class Box:
         left = direction[0] * lx + direction[1] * ly
         scores = {"front": along, "rear": -along, "left": left, "right": -left}
         return max(FACES, key=lambda face: scores[face])
+
+    def face_along(self, direction: Point) -> str | None:
+        """The face whose outward normal is the unit vector `direction` itself (None: no face's is)."""
+        face = self.face_towards(direction)
+        (fx, fy), (lx, ly) = self.axes
+        nx, ny = {"front": (fx, fy), "rear": (-fx, -fy), "left": (lx, ly), "right": (-lx, -ly)}[face]
+        return face if direction[0] * nx + direction[1] * ny >= 1.0 - SQUARE else None
 
 
 def corner_array(poses: np.ndarray, length: float, width: float, shrink: float = 0.0) -> np.ndarray:
@@ -174,6 +182,17 @@ class Contact:
     faces: tuple[str, str]  # of the first body, of the second: the face the contact pushes on
     zones: tuple[tuple[str, ...], tuple[str, ...]]  # each body's faces at the contact point (two at a corner)
     angle: float  # degrees between their headings, 0..180
+    # Each body's face the contact pushes square into (`pressed`): None for a body whose corner is
+    # what meets the other's face, so that which of its corner's faces is struck is left to the angle.
+    pressed: tuple[str | None, str | None] = (None, None)
+
+
+def pressed(a: Box, b: Box, direction: Point) -> tuple[str | None, str | None]:
+    """At a touch whose direction (from a towards b) is the face normal that still separates the
+    bodies: the face of each body that normal is its own, which the other's corner or face enters
+    square (both, for faces that meet flat); None for a body whose corner enters the other's face.
+    A corner into a face is the geometry that decides which face is struck: the entered face is."""
+    return a.face_along(direction), b.face_along((-direction[0], -direction[1]))
 
 
 def first_touch(t0: float, t1: float, a: tuple[Box, Box], b: tuple[Box, Box]) -> Contact:
@@ -208,4 +227,5 @@ def first_touch(t0: float, t1: float, a: tuple[Box, Box], b: tuple[Box, Box]) ->
     points = [((p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0) for p, q in near]
     point = (sum(p[0] for p in points) / len(points), sum(p[1] for p in points) / len(points))
     zones = (body_a.faces_at(point, faces[0]), body_b.faces_at(point, faces[1]))
-    return Contact(t0 + lo * (t1 - t0), point, faces, zones, angle)
+    square = (None, None) if hi == 0.0 else pressed(body_a, body_b, direction)
+    return Contact(t0 + lo * (t1 - t0), point, faces, zones, angle, square)

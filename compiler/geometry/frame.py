@@ -36,10 +36,11 @@ class Band:
     left: float
 
     @classmethod
-    def across(cls, own: Sequence[Lane], other: Sequence[Lane]) -> Band:
-        """The road whose lanes in the car's direction are `own` (right-most first), `other` the rest."""
+    def across(cls, own: Sequence[Lane], other: Sequence[Lane], median: float = 0.0) -> Band:
+        """The road whose lanes in the car's direction are `own` (right-most first), `other` the rest,
+        with `median` metres of open ground between the two (0: their lanes lie side by side)."""
         right = -own[0].width / 2.0
-        width = sum(lane.width for lane in own) + sum(lane.width for lane in other)
+        width = sum(lane.width for lane in own) + median + sum(lane.width for lane in other)
         return cls(Polyline(own[0].shape), right, right + width)
 
     def _axes(self, s: float) -> tuple[Point, Point, Point]:

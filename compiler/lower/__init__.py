@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 
 from sovarc.compiler.lower.assume import COMPASS, assume
 from sovarc.compiler.lower.consistency import check_headings
-from sovarc.compiler.lower.contact import Contact, contacts, describe
+from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.routes import vehicle_route
@@ -412,6 +412,14 @@ def _no_contact(
 ) -> list[Diagnostic]:
     seen = contacts_any(striker, victim)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
+    # a victim that leaves the lane they share (its line angles off it: a rear-end's crossing contact)
+    leaves = any(c.kind == "crossing" for c in contacts(striker, victim, CrashType.REAR_END))
+    if crash is CrashType.SIDE and leaves and any(c.kind == "shared" and c.sign == 1 for c in seen):
+        s, v = striker.participant.id, victim.participant.id
+        how += (
+            f"; following {v} in its lane, {s} meets its rear: {v} is never turned {SIDE_TURNED:.0f} degrees or "
+            f"more off the lane while still in {s}'s way"
+        )
     turning = " and ".join(r.participant.id for r in (striker, victim) if any(not m.backing for m in r.manoeuvres))
     if turning and contacts(striker, victim, crash, whole=True):
         how = (

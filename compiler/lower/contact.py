@@ -58,8 +58,17 @@ AS_BACKING = {
     CrashType.FRONTAL: CrashType.REAR_END,
     CrashType.SIDE: CrashType.SIDE,
 }
-# A car turning in legs is struck where along its side the striker's path crosses it: as it moves
-# off from its last change of gear its body lies across a lane, its middle often past that path.
+# A vehicle turning off the lane its follower keeps is met on its side only once it has turned this
+# far from the follower's heading: before that its rear corner is what the follower meets, from behind
+# (compiler/crashes.struck_face: a rear-end up to 45 degrees). 5 degrees past that bound: a driveway
+# turn's rear corner leaves the follower's way soon after, and synthesis measures the touch itself.
+SIDE_TURNED = CRASH_ANGLES["rear_end"][1] + 5.0
+SIDE_MARGIN = 0.1  # m the victim's rear corner is inside the striker's way at such a contact
+# Where along the victim's side a side crash puts the striker's front, of its length from the front:
+# the middle first, then further back. A car turning in legs lies across a lane as it moves off from
+# its last change of gear, its middle often past the striker's path; and a striker that meets a moving
+# victim's side at an angle (a left turner across an oncoming car) placed at the middle first touches
+# its front corner as the victim drives on into it (synthesis refuses such a plan: the next is tried).
 TURNING_SIDE = (0.5, 0.65, 0.8)
 
 
@@ -89,7 +98,9 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
     k = FACE[named] * victim.body.length
     side = crash is CrashType.SIDE
     if whole or not (striker.manoeuvres or victim.manoeuvres):
-        found = _meetings(_View.of_line(striker), _View.of_line(victim), k, side)
+        faces = [face * victim.body.length for face in TURNING_SIDE] if side and not whole else [k]
+        mine, theirs = _View.of_line(striker), _View.of_line(victim)
+        found = list(dict.fromkeys(c for back in faces for c in _meetings(mine, theirs, back, side)))
     else:
         lead = striker.body.length if backing else 0.0
         mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_line(striker)
@@ -99,7 +110,8 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
                 theirs, back = _View.after_turns(victim, face * victim.body.length), 0.0
             else:
                 theirs, back = _View.of_line(victim), face * victim.body.length
-            found += [_on_routes(c, mine, theirs) for c in _meetings(mine, theirs, back, side)]
+            front = not victim.manoeuvres  # the victim's view is its front bumper's line
+            found += [_on_routes(c, mine, theirs) for c in _meetings(mine, theirs, back, side, front)]
     found = [c for c in found if _accepts(crash, c)]
     preference = {
         CrashType.REAR_END: lambda c: (c.kind != "shared", c.angle, -c.hi),
@@ -172,7 +184,9 @@ def _on_routes(c: Contact, striker: _View, victim: _View) -> Contact:
     return replace(c, lo=c.lo + striker.shift, hi=c.hi + striker.shift, offset=offset)
 
 
-def _meetings(striker: _View, victim: _View, k: float, side: bool = False) -> list[Contact]:
+def _meetings(striker: _View, victim: _View, k: float, side: bool = False, front: bool = True) -> list[Contact]:
+    """The contacts of the two views' lines; `k` m behind the victim's point is the face met, and
+    `front`: the victim's points are its front bumper's (else its face's already)."""
     a, sa, ha = striker.points, striker.s, striker.headings
     b, sb, hb = victim.points, victim.s, victim.headings
     d = np.hypot(a[:, None, 0] - b[None, :, 0], a[:, None, 1] - b[None, :, 1])
@@ -196,7 +210,14 @@ def _meetings(striker: _View, victim: _View, k: float, side: bool = False) -> li
                 Contact(float(sa[face_lo]), float(sa[face_hi]), sign, offset, 0.0 if same else 180.0, "shared")
             )
         close[lo : hi + 1] = False
-        if same:
+        if same and side and front:
+            # a side crash on a vehicle turning off: met where its side lies across the striker's line
+            turned = _turned_side(striker, victim, hi, int(nearest[hi]))
+            if turned is not None:
+                s_striker, u, turn = turned
+                found.append(Contact(s_striker, s_striker, 0, u, turn, "crossing"))
+            meets = (_merge(ha, hb, d, apart, nearest, lo, gap),)
+        elif same:
             rear = victim.body.length / 2.0  # from the middle of the victim's side to its rear
             meets = (
                 _merge(ha, hb, d, apart, nearest, lo, gap),
@@ -297,6 +318,48 @@ def _merge(
             back = lo if back is None else back
             return back * STEP, float(nearest[back]) * STEP, angle
     return None
+
+
+def _turned_side(striker: _View, victim: _View, i0: int, j0: int) -> tuple[float, float, float] | None:
+    """Where a striker keeping its lane meets the side of a victim turning off it, as (s, u, angle)
+    with u the victim's front's arc length: the first point of the victim's line past the end of
+    their shared stretch (striker point i0, victim point j0) where it has turned between SIDE_TURNED
+    and 180 less that from the striker's heading while the rear corner of its side that faces the
+    striker is still in the striker's way (at most its half width, less a margin, to the side the
+    victim turns to). The striker's front is placed where it first reaches that side: at the rear
+    corner, or where the side crosses the striker's far edge. Before the victim has turned that far
+    the rear corner is met from behind; a turn so wide that its rear has left the striker's way
+    first is met on no side (None): the rear face is what lies across the striker's path."""
+    a, sa, ha = striker.points, striker.s, striker.headings
+    b, sb, hb = victim.points, victim.s, victim.headings
+    length, half = victim.body.length, victim.body.width / 2.0
+    reach = striker.body.width / 2.0
+    for j in range(j0, min(len(b), j0 + int(APART_WITHIN / STEP))):
+        f = _unit(float(hb[j]))
+        i = max(i0, int(np.argmin(np.hypot(*(a - (b[j] - length / 2.0 * f)).T))))
+        g = _unit(float(ha[i]))
+        turn = angle_diff(float(hb[j]), float(ha[i]))  # positive: turned to the striker's right
+        if not SIDE_TURNED <= abs(turn) <= 180.0 - SIDE_TURNED:
+            continue
+        away = np.array([g[1], -g[0]]) if turn > 0 else np.array([-g[1], g[0]])  # the way it turns
+        # the rear corner of the side it turns to, which faces the striker behind it
+        corner = b[j] - length * f + half * np.array([-f[1], f[0]]) * (1.0 if turn < 0 else -1.0)
+        lateral = float((corner - a[i]) @ away)
+        if lateral > reach - SIDE_MARGIN:
+            continue  # the rear lies across the striker's path: its rear face is what is met
+        # the far edge of the striker's front (at -reach) meets the side where the side crosses it
+        along = (-reach - lateral) / float(f @ away) if lateral < -reach else 0.0
+        point = corner + along * f
+        s = float(sa[i] + (point - a[i]) @ g)
+        if along > length * 0.75 or not 0.0 <= s <= float(sa[-1]):
+            return None
+        return s, float(sb[j]), abs(turn)
+    return None
+
+
+def _unit(heading: float) -> np.ndarray:
+    rad = np.radians(heading)
+    return np.array([np.sin(rad), np.cos(rad)])
 
 
 def _diverge(

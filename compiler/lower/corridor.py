@@ -28,6 +28,7 @@ from sovarc.dsl.ir import ActionKind, Side
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
 DRIVEWAY = 8.0  # m of driveway before (or after) the curve
 SWING_MARGIN = 0.15  # m kept in hand when a long body's rear swings out in a lane change
+OPEN_SLACK = 0.5  # m: an open median measured here may exceed the site's (sampled every 2 m) by this
 
 
 @dataclass(frozen=True)
@@ -54,10 +55,11 @@ class Corridor:
         """The other direction's lane `number`, as a line running our way."""
         return Polyline(self.other[_clamp(number, len(self.other)) - 1].shape).reversed()
 
-    def half_width(self) -> tuple[float, float]:
-        """Distance from the centre of our lane 1 to the road's right edge, and to its far left edge."""
+    def half_width(self, median: float = 0.0) -> tuple[float, float]:
+        """Distance from the centre of our lane 1 to the road's right edge, and to its far left edge
+        (across `median` metres of open ground between the directions)."""
         right = self.own[0].width / 2.0
-        left = sum(lane.width for lane in self.own) - right + sum(lane.width for lane in self.other)
+        left = sum(lane.width for lane in self.own) - right + median + sum(lane.width for lane in self.other)
         return right, left
 
 
@@ -82,6 +84,7 @@ class Drive:
     left_road: bool = False
     wrong_way_lane: int | None = None  # the lane of the other direction to drive in when retrograde
     site: str = ""  # the site's id, for errors
+    median: float = 0.0  # m: the open median the site's directions lie apart by, crossable (Site.median)
     manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
     body: Body = CAR  # what drives it: the room a turn needs is its body's
     junction: tuple[float, float] | None = None  # where its junction move begins and ends on `line`
@@ -124,10 +127,14 @@ class Drive:
         less a margin for the synthesized path). A body no longer than the car changes lanes as a car
         always has: its swing is within the shortest change but where the road is wide or the move
         long (a swerve into an oncoming lane past a gap), and a car's plans are not to change."""
-        if self.body.length <= CAR.length:
-            return change_length(self.speed)
         width = self._lane_width()
         room = width / 2.0 + LINE_TOLERANCE - self.body.width / 2.0 - SWING_MARGIN
+        if self.median > 0.0 and lanes > 1.0:
+            # across a road with an open median, far wider than its lanes side by side: long enough
+            # to keep one lane change's sideways acceleration (the width over the length squared)
+            return max(change_length(self.speed) * lanes**0.5, swept_change_length(self.body, lanes * width, room))
+        if self.body.length <= CAR.length:
+            return change_length(self.speed)
         return max(change_length(self.speed), swept_change_length(self.body, lanes * width, room))
 
     def shift_to(self, number: int) -> None:
@@ -161,7 +168,7 @@ class Drive:
 
         The swerve runs beside that lane: an arm's oncoming edge may begin further on than its own
         lane (a node splits it), and before it the car would cross lanes its route does not hold.
-        It crosses a lane line, never a median (see `over_median`).
+        It crosses a lane line or an open median, never a divided road's (see `over_median`).
         """
         lanes = self.corridor.own if self.against else self.corridor.other
         number = min(self.wrong_way_lane or len(lanes), len(lanes))
@@ -180,7 +187,8 @@ class Drive:
     def over_median(self, index: int, lo: float, hi: float) -> None:
         """Refuse a crossing between the directions, from arc length `lo` to `hi`, where their inner
         lanes lie further apart than MEDIAN_MAX: a median (a kerb, grass, rails) is no lane line,
-        just as a divided road's halves make no two-way straight site (maps/sites.py)."""
+        just as a divided road's halves make no two-way straight site (maps/sites.py). A median the
+        map describes as flat, open ground is crossed (the site's `median`, maps/medians.py)."""
         inner = Polyline(self.corridor.own[-1].shape)
         facing = Polyline(self.corridor.other[-1].shape)
         widths = (self.corridor.own[-1].width + self.corridor.other[-1].width) / 2.0
@@ -190,7 +198,7 @@ class Drive:
             t, distance = facing.project(beside)
             if 0.5 < t < facing.length - 0.5:  # the other direction runs beside here
                 gaps.append(distance - widths)
-        if max(gaps) > MEDIAN_MAX:
+        if max(gaps) > max(MEDIAN_MAX, self.median + OPEN_SLACK):
             raise LoweringError(
                 Diagnostic(
                     f"action {index + 1}: on {self.site}, a median {max(gaps):.1f} m wide divides the road "
@@ -219,7 +227,7 @@ class Drive:
         `to` of the other direction; without one, into the lane the turn reaches most easily
         (the one by the centre line, unless the road is too narrow to turn into it). A road too
         narrow for a half circle takes a three-point turn (kturn.py)."""
-        band = Band.across(self.corridor.own, self.corridor.other)
+        band = Band.across(self.corridor.own, self.corridor.other, self.median)
         self.lanes.update(lane.id for lane in self.corridor.own + self.corridor.other)  # the whole road
         p0 = self.line.point(at)
         self.corridor = self.corridor.turned()
@@ -281,7 +289,7 @@ class Drive:
         A driveway on the left is reached across the other direction's lanes, which become
         lanes the vehicle may use; driving against traffic, the road's sides swap.
         """
-        right, left = self.corridor.half_width()
+        right, left = self.corridor.half_width(self.median)
         if side is Side.LEFT:
             for lane in self.corridor.other:
                 self._use(lane)

@@ -26,6 +26,7 @@ from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.lower.wide import wide_turn
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
+from sovarc.compiler.maps.search import geometric_exit
 from sovarc.compiler.vehicles import PLANNED, Body, model, participant_model
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, Heading, Participant, RoadKind, Side
@@ -68,6 +69,7 @@ def vehicle_route(
         speed=speed,
         wrong_way_lane=wrong_way_lane,
         site=match.site.id,
+        median=match.site.median,
         body=body,
     )
     actions = p.known_actions
@@ -254,7 +256,9 @@ def _junction_line(
 ) -> tuple[Polyline, Corridor, int]:
     """The line across the junction, the corridor it leaves on and the lane number it enters
     (`index`: the move's action; -1 when the actions name none)."""
-    if not drive.against and move is not ActionKind.U_TURN:
+    connection: Connection | None = None
+    across = None if drive.against or move is ActionKind.U_TURN else _no_connection(match, arm, move)
+    if not drive.against and move is not ActionKind.U_TURN and across is None:
         current = drive.corridor.own[drive.lane - 1]
         connection = _pick_connection(match, arm, move, current, to)
         if connection.from_lane != current.id:
@@ -272,11 +276,16 @@ def _junction_line(
         return _u_turn(drive, arm, to, match.site.id, index)
     end = drive.line.point(drive.line.length)
     heading = drive.line.heading(drive.line.length)
-    if drive.against:
-        corridor = Corridor.leaving(_wrong_way_exit(match, arm, move))
-        number = min(to if isinstance(to, int) else len(corridor.own), len(corridor.own))
+    if drive.against or across is not None:
+        corridor = Corridor.leaving(across or _wrong_way_exit(match, arm, move))
+        count = len(corridor.own)
+        # into the lane it names, else (across a junction by geometry) the nearest: a left turn's
+        # left-most, a right turn's right-most, straight on its own lane number
+        nearest = {ActionKind.TURN_LEFT: count, ActionKind.TURN_RIGHT: 1}.get(move, drive.lane)
+        number = min(to if isinstance(to, int) else (count if drive.against else nearest), count)
         start = corridor.own_line(number)
         return bezier(end, heading, start.point(0.0), start.heading(0.0)), corridor, number
+    assert connection is not None
     target = _lane(match, connection.to_lane)
     exit_arm = match.site.arm_of_lane(connection.to_lane)
     assert exit_arm is not None
@@ -350,6 +359,14 @@ def _arm_in_move_slot(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm | Non
     """The arm a manoeuvre leaves by on the compass cross. Slots run clockwise by the heading of
     ENTERING traffic, so straight ahead leaves by the opposite slot, a left turn by the next slot."""
     return match.site.arm_in_slot(arm.slot + {ActionKind.TURN_LEFT: 1, ActionKind.TURN_RIGHT: 3}.get(move, 2))
+
+
+def _no_connection(match: SiteMatch, arm: Arm, move: ActionKind) -> Arm | None:
+    """The arm a move leaves by across the junction by geometry, when the map has no connection for
+    it from `arm` (maps/search.geometric_exit); None when it has one."""
+    if any(c.direction in JUNCTION_MOVES[move] for c in match.site.connections_from(arm)):
+        return None
+    return geometric_exit(match.site, arm, move)
 
 
 def _pick_connection(match: SiteMatch, arm: Arm, move: ActionKind, current: LaneInfo, to: Any) -> Connection:

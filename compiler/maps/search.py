@@ -198,6 +198,13 @@ def _move_ok(site: Site, arm: Arm, need: Need, clamp: bool, notes: list[str]) ->
         directions = JUNCTION_MOVES[need.move]
         ids = {c.to_lane for c in site.connections_from(arm) if c.direction in directions}
         targets = [a for a in site.arms if any(lane.id in ids for lane in a.outgoing)]
+        if not targets and clamp and (across := geometric_exit(site, arm, need.move)) is not None:
+            # the map draws no such way across: laid by the arms' geometry (lower/routes.py), after exact fits
+            targets = [across]
+            notes.append(
+                f"{need.participant}: the junction has no {need.move.value} connection from arm {arm.id}; "
+                "laid across it by the arms' geometry"
+            )
     if need.against_after:
         targets = [a for a in targets if a.incoming]
     if not targets:
@@ -205,6 +212,22 @@ def _move_ok(site: Site, arm: Arm, need: Need, clamp: bool, notes: list[str]) ->
     widest = max(len(a.outgoing) for a in targets)
     what = f"{need.participant}: the road its {need.move.value} enters"
     return _lanes_ok(need.to_lanes, widest, what, clamp, notes)
+
+
+# Where each junction move leaves a junction, in places of its compass cross clockwise from the arm it enters by.
+MOVE_SLOTS = {ActionKind.TURN_LEFT: 1, ActionKind.GO_ACROSS: 2, ActionKind.TURN_RIGHT: 3}
+
+
+def geometric_exit(site: Site, arm: Arm, move: ActionKind) -> Arm | None:
+    """The arm a move leaves a junction by when the map has no connection for it: the arm in the
+    move's place in the compass cross, if traffic leaves along it and it is another arm. An OpenDRIVE
+    junction holds only the connecting roads its author drew (netconvert makes SUMO's connections
+    from them alone), and a crossing of two-way roads without its left turns is still one a car can
+    turn left across: the road model, its arms' headings and lanes, says where that turn leads."""
+    if move not in MOVE_SLOTS or site.kind is RoadKind.STRAIGHT:
+        return None
+    target = site.arm_in_slot((arm.slot + MOVE_SLOTS[move]) % 4)
+    return target if target is not None and target.outgoing and target.id != arm.id else None
 
 
 def features(match: SiteMatch) -> tuple[float, float, float]:
@@ -262,8 +285,12 @@ def _no_fit(
         message += ramps(road_map, scenario.road.kind)
     of_kind = [site for site in sites if site.kind is scenario.road.kind]
     if of_kind and not any(all(arm.two_way for arm in site.arms) for site in of_kind):
-        # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX)
-        message += f"; none of its {len(of_kind)} {KIND_NAMES[scenario.road.kind][1]} is two-way throughout"
+        # say so plainly: a divided road's carriageways are staged one way at a time (straights.MEDIAN_MAX),
+        # unless the map describes the ground between them as open (medians.py)
+        message += (
+            f"; none of its {len(of_kind)} {KIND_NAMES[scenario.road.kind][1]} is two-way throughout"
+            " (divided by a barrier, a kerb or ground the map does not describe as open)"
+        )
     if of_kind and len(needs) > 1:
         # which participant the map's sites of this kind fail, each need on its own (any rotation)
         alone = [sum(match_site(site, (need,), clamp=True) is not None for site in of_kind) for need in needs]

@@ -61,6 +61,9 @@ class Site:
     connections: tuple[Connection, ...] = ()  # sorted by (from_lane, to_lane); none on a straight road
     junction: str | None = None  # SUMO junction id ('<id>+<id>...' over several nodes)
     control: str | None = None  # SUMO junction type: priority, traffic_light, ... ('/'-joined over several kinds)
+    # m: on a straight site, the widest median between its directions that a car may drive across
+    # (flat and open, as the map describes it: medians.py); 0 where their lanes lie side by side
+    median: float = 0.0
 
     def arm_in_slot(self, slot: int) -> Arm | None:
         return next((arm for arm in self.arms if arm.slot == slot % 4), None)

@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING, Any
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
 from sovarc.compiler.maps.clusters import Cluster, junction_clusters, paths, vias
 from sovarc.compiler.maps.geometry import fit_frame
+from sovarc.compiler.maps.medians import open_medians
 from sovarc.compiler.maps.roads import CAR, LaneInfo, NodeArm, RoadNet, axis
 from sovarc.compiler.maps.site import Arm, Connection, Site
 from sovarc.compiler.maps.straights import MEDIAN_MAX as MEDIAN_MAX  # lowering's median rule
@@ -57,7 +58,7 @@ def find_sites(
     if sites is None:
         roads = road_net(road_map)
         junctions, road_map.cache["merges"] = _junction_sites(roads)
-        found = junctions + straight_sites(roads, min_length)
+        found = junctions + straight_sites(roads, min_length, _open_edges(road_map))
         sites = road_map.cache[min_length] = tuple(sorted(found, key=lambda s: s.id))
     wanted = RoadKind(kind) if kind is not None else None
     return [s for s in sites if wanted is None or s.kind is wanted]
@@ -72,6 +73,14 @@ def road_net(road_map: RoadMap) -> RoadNet:
     if roads is None:
         roads = road_map.cache["roads"] = RoadNet(road_map.net)
     return roads
+
+
+def _open_edges(road_map: RoadMap) -> frozenset[str]:
+    """The edges whose road has a median a car can drive across: only an OpenDRIVE map says so
+    (medians.py); in a SUMO network the ground between two carriageways is not described."""
+    if road_map.format != "opendrive":
+        return frozenset()
+    return open_medians(road_map.path, (e.getID() for e in road_map.net.getEdges()))
 
 
 def merges(road_map: RoadMap) -> int:

@@ -6,6 +6,10 @@ other direction runs beside it with no median between (a two-way road). A straig
 keeps both of these and turns little: its direction of travel spreads over no more than its
 length allows at STRAIGHT_RADIUS, and never more than STRAIGHT_TURN. A long stretch is cut
 into several sites of at most SITE_MAX metres.
+
+A median the map describes as flat, open ground (medians.py) does not divide a road: where the
+edges on both sides are of roads with one, the directions up to OPEN_MEDIAN_MAX apart are one
+two-way road, and the site records how wide its median is (`Site.median`) for lowering to cross.
 """
 
 from __future__ import annotations
@@ -32,9 +36,14 @@ SNAP = STEP + 0.5  # m: a stretch this close to its edges' ends runs to them
 # are staged as one-way roads, because a median (often with paths or rails on it) is no lane
 # line a wrong-way or overtaking car can cross.
 MEDIAN_MAX = 1.0  # m
+# The widest flat, unobstructed median taken as one road's: within about 10 m a car that leaves its
+# lanes reaches the oncoming ones, which is why design guides (AASHTO's Roadside Design Guide: 30 ft)
+# ask for a median barrier below that width on fast roads, and cross-median crashes happen there.
+OPEN_MEDIAN_MAX = 10.0  # m
 
 
-def straight_sites(roads: RoadNet, min_length: float) -> list[Site]:
+def straight_sites(roads: RoadNet, min_length: float, open_edges: frozenset[str] = frozenset()) -> list[Site]:
+    """`open_edges`: the edges whose road has a median a car can drive across (medians.py)."""
     sites = []
     done: set[str] = set()
     for edge in sorted((e for e in roads.net.getEdges() if is_road(e)), key=lambda e: e.getID()):
@@ -42,8 +51,8 @@ def straight_sites(roads: RoadNet, min_length: float) -> list[Site]:
             continue
         chain = roads.chain(edge, through=True)
         done.update(e.getID() for e in chain)
-        road = _Road(roads, chain)
-        for lo, hi, two_way in road.stretches(min_length):
+        road = _Road(roads, chain, open_edges)
+        for lo, hi, two_way, median in road.stretches(min_length):
             if two_way and road.partner is not None and road.partner.first < road.first:
                 continue  # the partner's walk stages the two-way stretch (it sees the same one)
             count = max(1, int((hi - lo) // max(SITE_MAX, min_length)))
@@ -54,11 +63,11 @@ def straight_sites(roads: RoadNet, min_length: float) -> list[Site]:
                     continue
                 if not two_way and len(directions[0][1]) < 2:
                     continue  # a one-way single lane is not a road to stage a crash on
-                sites.append(_site(directions))
+                sites.append(_site(directions, median))
     return sites
 
 
-def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]]) -> Site:
+def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]], median: float) -> Site:
     axes = [lanes[len(lanes) // 2].shape for _, lanes in directions]
     headings = [heading_between(a[0], a[-1]) for a in axes]
     frame = fit_frame(headings)
@@ -74,15 +83,17 @@ def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]]) -> Site:
         centre=(round(centre[0], 3), round(centre[1], 3)),
         orientation=frame.orientation,
         arms=tuple(sorted(arms, key=lambda arm: arm.slot)),
+        median=median,
     )
 
 
 class _Direction:
     """One direction of a road: its edges and its inner car lane, chained."""
 
-    def __init__(self, roads: RoadNet, edges: list[Any]) -> None:
+    def __init__(self, roads: RoadNet, edges: list[Any], open_edges: frozenset[str]) -> None:
         self.roads = roads
         self.edges = edges
+        self.open = np.asarray([e.getID() in open_edges for e in edges])  # per edge: its median is crossable
         self.first = edges[0].getID()
         shape: list[Point] = []
         ends = []
@@ -144,31 +155,37 @@ class _Direction:
 class _Road:
     """A road walked along one direction (`own`), with the other direction (`partner`) if any."""
 
-    def __init__(self, roads: RoadNet, chain: list[Any]) -> None:
-        self.own = _Direction(roads, chain)
+    def __init__(self, roads: RoadNet, chain: list[Any], open_edges: frozenset[str]) -> None:
+        self.own = _Direction(roads, chain, open_edges)
         self.first = self.own.first
         backs = [
             b for e in chain if (b := roads.reverse(e)) is not None and b.getID() not in {x.getID() for x in chain}
         ]
-        self.partner = _Direction(roads, roads.chain(backs[0], through=True)) if backs else None
+        self.partner = _Direction(roads, roads.chain(backs[0], through=True), open_edges) if backs else None
 
-    def stretches(self, min_length: float) -> list[tuple[float, float, bool]]:
-        """Straight stretches at least `min_length` long: (from, to, two-way), in arc length along `own`."""
+    def stretches(self, min_length: float) -> list[tuple[float, float, bool, float]]:
+        """Straight stretches at least `min_length` long: (from, to, two-way, the widest open median
+        between the directions, 0 for none), in arc length along `own`."""
         own = self.own
         if own.length < min_length:
             return []
         s = np.linspace(0.0, own.length, max(2, int(own.length / STEP) + 1))
         points = own.sample(s)
         keys = np.asarray(own.counts)[own.edge_at(s)] * 100
+        medians = np.zeros(len(s))
         if self.partner is not None:
             back = self.partner
             reversed_points = back.points[::-1]
             total = back.length
-            along, gap = project_many(reversed_points, points, near=MEDIAN_MAX + 2.0 * max(own.widths + back.widths))
+            widest = OPEN_MEDIAN_MAX if own.open.any() and back.open.any() else MEDIAN_MAX
+            along, gap = project_many(reversed_points, points, near=widest + 2.0 * max(own.widths + back.widths))
             t = total - along  # arc length along the partner's own direction
             at = back.edge_at(t)
             widths = (np.asarray(back.widths)[at] + np.asarray(own.widths)[own.edge_at(s)]) / 2.0
-            beside = gap - widths <= MEDIAN_MAX
+            median = gap - widths
+            crossable = own.open[own.edge_at(s)] & back.open[at] & (median <= OPEN_MEDIAN_MAX)
+            beside = (median <= MEDIAN_MAX) | crossable
+            medians = np.where(crossable & (median > MEDIAN_MAX), median, 0.0)
             keys = keys + np.where(beside, np.asarray(back.counts)[at], 0)
         headings = np.degrees(np.arctan2(*np.diff(points, axis=0).T)) % 360.0  # compass: atan2(dx, dy)
         keys = np.where(_curved(points), -1, keys)
@@ -188,7 +205,8 @@ class _Road:
                 lo_turn, hi_turn = lo2, hi2
                 end += 1
             if s[end] - s[start] >= min_length and keys[start] >= 0:
-                found_stretches.append((float(s[start]), float(s[end]), bool(keys[start] % 100 > 0)))
+                median = round(float(medians[start : end + 1].max()), 1)
+                found_stretches.append((float(s[start]), float(s[end]), bool(keys[start] % 100 > 0), median))
             start = end
         return found_stretches
 

@@ -85,7 +85,8 @@ def describe(site: Site) -> str:
     x, y = site.centre
     arms = "; ".join(_arm(arm) for arm in site.arms)
     control = f" {site.control}" if site.control else ""
-    return f"{site.id} at ({x:.0f}, {y:.0f}){control}, {site.min_length:.0f} m: {arms}"
+    median = f", open median {site.median:.1f} m" if site.median else ""
+    return f"{site.id} at ({x:.0f}, {y:.0f}){control}, {site.min_length:.0f} m{median}: {arms}"
 
 
 def _arm(arm: Arm) -> str:

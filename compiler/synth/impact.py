@@ -11,7 +11,7 @@ oracle would fail is refused, and the next staging is tried.
 
 from __future__ import annotations
 
-from sovarc.compiler.crashes import backing_at, face_words, fits, needs, planned_touch
+from sovarc.compiler.crashes import backing_at, face_words, fits, needs, planned_touch, struck_words, victim_face
 from sovarc.compiler.plan import Plan
 from sovarc.dsl.errors import Diagnostic, SynthesisError
 
@@ -28,8 +28,9 @@ def check_impact(plan: Plan) -> None:
     if fits(kind, contact, backing):
         return
     s_zone, v_zone = contact.zones
+    struck = struck_words(v_zone, victim_face(contact, backing))
     message = (
-        f"on {plan.site}, {striker}'s {face_words(s_zone)} would first touch {victim}'s {face_words(v_zone)} "
+        f"on {plan.site}, {striker}'s {face_words(s_zone)} would first touch {victim}'s {struck} "
         f"at {contact.angle:.1f} degrees (t={contact.time:.2f} s); {needs(kind, striker, victim, backing)}"
     )
     raise SynthesisError(Diagnostic(message, span))

@@ -11,7 +11,8 @@ a body that clips the other metres before C_A does not. Its time is kept as a fa
 
 Angles and faces follow the SUMO oracle, so that the two targets agree: rear_end = striker front
 into victim rear, headings within 45 degrees; frontal = front into front, headings at least 100
-degrees apart; side = striker front into a side of the victim (the faces decide, not the angle). A
+degrees apart; side = striker front into a side of the victim (the faces decide, not the angle); at
+a corner of the victim, the face struck is decided from the touch (compiler/crashes.struck_face). A
 striker backing at the touch (it moves against the way it faces, as the file's poses show) leads with
 its rear, and front and rear swap on both bodies: rear_end = its rear into the victim's front."""
 
@@ -22,10 +23,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from itertools import combinations
 
-from sovarc.compiler.crashes import BACKING_FACES, CRASH_ANGLES
+from sovarc.compiler.crashes import BACKING_FACES, CRASH_ANGLES, struck_face
 from sovarc.compiler.crashes import VICTIM_FACES as CRASH_FACES
 from sovarc.compiler.geometry.angles import angle_diff
-from sovarc.compiler.geometry.bodies import Box, overlap
+from sovarc.compiler.geometry.bodies import Box, overlap, pressed, separation
 from sovarc.targets.openscenario.kinematics import (
     box,
     contact_point,
@@ -117,10 +118,16 @@ def _area(scene: Scene, crash: Crash) -> Finding:
     return Finding("collision_area", True, message, crash.time)
 
 
+def first_touch_time(scenario: ScenarioFile, paths: dict[str, tuple[Pose, ...]], a: str, b: str) -> float | None:
+    """When bodies a and b first touch as the file moves them (within 1 cm; None: never)."""
+    scene = Scene(scenario, paths)
+    return next((t for t in _times(0.0, scene.end(a, b)) if gap(scene.box(a, t), scene.box(b, t)) <= 0.01), None)
+
+
 def _contact(scene: Scene, crash: Crash, facts: dict[str, object]) -> tuple[Finding, float | None]:
     """The first-contact finding and the time of the first touch (None: never)."""
     a, b = crash.striker, crash.victim
-    first = next((t for t in _times(0.0, scene.end(a, b)) if gap(scene.box(a, t), scene.box(b, t)) <= 0.01), None)
+    first = first_touch_time(scene.scenario, scene.paths, a, b)
     facts["first_contact_time"] = None if first is None else round(first, 3)
     if first is None:
         return Finding("first_contact", False, f"{a} and {b} never touch"), None
@@ -198,10 +205,13 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     if lead not in s_faces:
         problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its {lead}")
     wanted = (BACKED_INTO if backing else VICTIM_FACES)[crash.type]
-    if not wanted.intersection(v_faces):
-        problems.append(
-            f"the victim {crash.victim} is hit on its {_words(v_faces)}, not its {' or '.join(sorted(wanted))}"
-        )
+    # which face of a corner is struck: the one definition (compiler/crashes.struck_face)
+    s_box, v_box = scene.box(crash.striker, touch), scene.box(crash.victim, touch)
+    square = pressed(s_box, v_box, separation(s_box, v_box)[1])[1]
+    struck = struck_face(v_faces, square if square in v_faces else None, relative, backing)
+    if struck not in wanted:
+        hit = _words(v_faces) + ("" if len(v_faces) == 1 else f", struck on its {struck}")
+        problems.append(f"the victim {crash.victim} is hit on its {hit}, not its {' or '.join(sorted(wanted))}")
     if problems:
         yield Finding("impact_faces", False, "; ".join(problems), touch)
     else:

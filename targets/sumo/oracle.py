@@ -9,7 +9,8 @@ Checks, in order:
 - `impact_angle`: at the first touch, the faces and the angle between headings match the
   crash type: rear_end = striker front into victim rear, headings within 45 degrees;
   frontal = front into front, headings at least 100 degrees apart (approaching each other;
-  see `compiler/crashes.CRASH_ANGLES`); side = striker front into a side of the victim. A
+  see `compiler/crashes.CRASH_ANGLES`); side = striker front into a side of the victim. At
+  a corner of the victim, the face struck is decided from the touch (`crashes.struck_face`). A
   striker backing at the touch (as planned) leads with its rear: front and rear swap on both.
 - `lane_lines`: until the impact, no participant's body reaches more than 25 cm into a lane
   its actions do not allow. Junction interiors have no painted lines and are not checked;
@@ -32,7 +33,17 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from sovarc.compiler.crashes import LINE_TOLERANCE, backing_at, face_words, first_overlap, fits, needs, touch
+from sovarc.compiler.crashes import (
+    LINE_TOLERANCE,
+    backing_at,
+    face_words,
+    first_overlap,
+    fits,
+    needs,
+    struck_words,
+    touch,
+    victim_face,
+)
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
@@ -212,8 +223,9 @@ def _angle_finding(plan: Plan, contact: Contact | None) -> Finding:
         return Finding("impact_angle", False, f"no {kind.value} impact: the striker and victim do not collide")
     striker, victim = plan.impact.striker, plan.impact.victim
     s_zone, v_zone = contact.zones
-    seen = f"{striker}'s {face_words(s_zone)} meets {victim}'s {face_words(v_zone)} at {contact.angle:.0f} degrees"
     backing = backing_at(plan, striker, contact.time)  # the striker as planned at the touch SUMO placed
+    struck = struck_words(v_zone, victim_face(contact, backing))
+    seen = f"{striker}'s {face_words(s_zone)} meets {victim}'s {struck} at {contact.angle:.0f} degrees"
     ok = fits(kind, contact, backing)
     message = f"{seen} ({kind.value})" if ok else f"{seen}; {needs(kind, striker, victim, backing)}"
     return Finding("impact_angle", ok, message, _t(contact.time))

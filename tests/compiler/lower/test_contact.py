@@ -5,8 +5,9 @@ from __future__ import annotations
 import math
 
 import pytest
+from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.polyline import Polyline
-from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, contacts, describe
+from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, SIDE_TURNED, TURNING_SIDE, contacts, describe
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.vehicles import CAR
 from sovarc.dsl.ir import CrashType, Participant, Role
@@ -22,8 +23,12 @@ ONCOMING_ACROSS = route("C", (-43.301, 25.0), (43.301, -25.0))  # heading 120: a
 
 
 def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None:
-    (side,) = contacts(NORTH, EAST, CrashType.SIDE)
+    side, *further = contacts(NORTH, EAST, CrashType.SIDE)
     assert (side.kind, side.sign, side.angle) == ("crossing", 0, pytest.approx(90.0))
+    # then the same point further back along the victim's side (TURNING_SIDE)
+    assert [c.victim_s(c.lo) - side.victim_s(side.lo) for c in further] == [
+        pytest.approx((face - TURNING_SIDE[0]) * CAR.length) for face in TURNING_SIDE[1:]
+    ]
     # the striker's front face is into the victim's side by SIDE_OVERLAP and, head-on to it, a
     # quarter of the victim's width: short of the crossing point by the rest of its half width
     assert side.lo == side.hi == pytest.approx(50.0 - (CAR.width / 4 - SIDE_OVERLAP), abs=0.05)
@@ -90,27 +95,48 @@ def test_lines_crossing_shallowly_meet_side_on_before_they_cross() -> None:
     slope = math.tan(math.radians(10.0))
     striker = route("A", (-50.0 * slope, 0.0), (50.0 * slope, 100.0))
     victim = route("B", (0.0, 0.0), (0.0, 100.0))
-    (side,) = contacts(striker, victim, CrashType.SIDE)
+    side = contacts(striker, victim, CrashType.SIDE)[0]
     assert side.kind == "crossing" and side.angle == pytest.approx(10.0, abs=0.5)
     front = striker.line.point(side.lo)
     assert front[1] < 45.0  # before the crossing at y = 50
     assert abs(front[0]) == pytest.approx(CAR.width - SIDE_OVERLAP, abs=0.3)
-    (steep,) = contacts(NORTH, EAST, CrashType.SIDE)
+    steep = contacts(NORTH, EAST, CrashType.SIDE)[0]
     # at right angles the front face is into the side before the lines cross (see above)
     assert steep.lo == pytest.approx(50.0 - (CAR.width / 4 - SIDE_OVERLAP), abs=0.05)
 
 
-def test_a_victim_angling_out_of_the_lane_is_met_at_its_rear_once_half_out() -> None:
+def test_a_victim_angling_out_of_the_lane_is_met_on_no_side_by_its_follower() -> None:
+    # it leaves the shared line at 30 degrees: its rear corner, still in the striker's way, is what
+    # the striker meets, from behind (a rear-end for every oracle), never its side
     striker = route("A", (0.0, 0.0), (0.0, 100.0))
-    victim = route("B", (0.0, 10.0), (0.0, 50.0), (-15.0, 76.0))  # leaves the shared line at 30 degrees
-    side = [c for c in contacts(striker, victim, CrashType.SIDE) if c.kind == "crossing"]
-    assert side
-    first = side[0]
-    assert first.angle == pytest.approx(30.0, abs=1.0)
-    rear = victim.line.point(first.victim_s(first.lo) - CAR.length)
-    front = striker.line.point(first.lo)
-    assert front[1] > 50.0  # after the lines part
-    assert math.dist(rear, front) == pytest.approx(CAR.width / 2.0, abs=0.3)  # its rear half a width out
+    victim = route("B", (0.0, 10.0), (0.0, 50.0), (-15.0, 76.0))
+    assert contacts(striker, victim, CrashType.SIDE) == []
+    assert any(
+        c.kind == "crossing" and c.angle == pytest.approx(30.0, abs=1.0)
+        for c in contacts(striker, victim, CrashType.REAR_END)
+    )
+
+
+def test_a_victim_turning_sharply_off_the_lane_is_met_on_its_side_once_turned_past_a_rear_end() -> None:
+    # a tight left turn (5 m radius) off the striker's line: the striker meets the victim's left side
+    # once it has turned SIDE_TURNED, while its rear-left corner is still in the striker's way
+    arc = [(-5.0 + 5.0 * math.cos(math.radians(a)), 50.0 + 5.0 * math.sin(math.radians(a))) for a in range(0, 91, 5)]
+    striker = route("A", (0.0, 0.0), (0.0, 100.0))
+    victim = route("B", (0.0, 10.0), *arc, (-30.0, 55.0))
+    (side,) = [c for c in contacts(striker, victim, CrashType.SIDE) if c.kind == "crossing"]
+    assert SIDE_TURNED <= side.angle <= SIDE_TURNED + 10.0
+    front = victim.line.point(side.victim_s(side.lo))
+    heading = victim.line.heading(side.victim_s(side.lo))
+    (fx, fy), (lx, ly) = heading_vector(heading), heading_vector(heading - 90.0)
+    rear_left = (front[0] - CAR.length * fx + CAR.width / 2 * lx, front[1] - CAR.length * fy + CAR.width / 2 * ly)
+    # its rear-left corner is in the striker's way (the turn is to -x), or beyond its far (+x) edge
+    assert rear_left[0] >= -(CAR.width / 2.0 - 0.3)
+    # the striker's front is placed where it first reaches that side: the corner, or where the side
+    # crosses its far edge
+    along = max(0.0, (rear_left[0] - CAR.width / 2.0) / -fx)
+    reached = (rear_left[0] + along * fx, rear_left[1] + along * fy)
+    assert reached[0] <= CAR.width / 2.0 + 1e-6
+    assert striker.line.point(side.lo)[1] == pytest.approx(reached[1], abs=0.3)
 
 
 def test_a_wrong_way_swerve_meets_the_oncoming_side_before_the_lines_join() -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 from sovarc.compiler.lower import lower_on, sites_for
 from sovarc.compiler.lower.solve import START_GAP
 from sovarc.dsl import parse
+from sovarc.dsl.errors import UnsatError
 
 from tests.compiler.lower.staging import town
 
@@ -48,7 +49,10 @@ def test_a_victim_starting_in_its_strikers_lane_starts_a_body_length_ahead() -> 
     for seed in (1, 2):  # on road:-stem|stem both lines begin at the road's end
         staged, notes, matches = sites_for(scenario, town(), roads=3, seed=seed)
         for match in matches:
-            lowered = lower_on(staged, match, town(), notes)
+            try:
+                lowered = lower_on(staged, match, town(), notes)
+            except UnsatError:  # a driveway turn too wide: the follower meets its rear, on no side
+                continue
             striker, victim = lowered.routes["V1"], lowered.routes["V2"]
             if striker.line.point(0.0) != victim.line.point(0.0):
                 continue

@@ -102,6 +102,22 @@ def test_a_swerve_across_a_median_is_refused_with_the_reason() -> None:
         drive.retrograde(1, 40.0)
 
 
+def test_a_swerve_crosses_an_open_median_its_site_records() -> None:
+    # open ground the map describes (maps/medians.py): the site's `median`, crossed as a lane line is
+    drive = _eastbound_with_oncoming(start=0.0, median=3.0)
+    drive.median = 3.0
+    drive.retrograde(1, 40.0)
+    assert drive.against and drive.line.resample(1.0)[-1, 1] == pytest.approx(WIDTH + 3.0)
+    # twice a lane's width sideways: a lane change's length (30 m at 10 m/s) times the root of the
+    # widths crossed, for the same sideways acceleration
+    lo, hi = drive.stretches[1]
+    assert hi - lo == pytest.approx(30.0 * ((WIDTH + 3.0) / WIDTH) ** 0.5, abs=0.5)
+    wider = _eastbound_with_oncoming(start=0.0, median=5.0)
+    wider.median = 3.0  # a gap wider than the site's open median is still refused
+    with pytest.raises(LoweringError, match=r"a median 5\.0 m wide divides the road"):
+        wider.retrograde(1, 40.0)
+
+
 def test_a_head_on_swerve_is_not_staged_across_a_city_median() -> None:
     """A city T-junction whose eastbound arm is a divided road (the westbound carriageway ~3 m
     off, split by a node 35 m before the junction): before, the swerve cut across the median and

@@ -16,7 +16,8 @@ X, T, S = RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT
 
 # What each OpenDRIVE file holds, as converted by netconvert.
 OPENDRIVE_SITES = {
-    # a 1.4 km gently curved motorway, four lanes each way: a 5 m median makes one-way sites, five stretches each
+    # a 1.4 km gently curved motorway, four lanes each way: a 5 m median with a guardrail along each
+    # edge (the file's railings) makes one-way sites, five stretches each
     "e6mini": {S: 10},
     "fabriksgatan": {X: 1, S: 3},  # one crossing; one of its arms is 17 m long, too short for a straight site
     "jolengatan": {S: 2},  # an 800 m curving street, single lanes: two stretches straight enough

@@ -156,6 +156,16 @@ def test_carla_town_site_lists(town: str, golden: object) -> None:
     golden.check(HERE / "golden" / f"{town}.sites", survey(road_map).text())  # type: ignore[attr-defined]
 
 
+@requires_shared
+def test_carla_town04_straight_roads(golden: object) -> None:
+    # its motorway's two directions are parted by 7 m of shoulders and nothing on them: ten two-way
+    # sites with an open median (maps/medians.py); the one-way ramps stay one-way sites
+    road_map = load_map(CARLA / "Town04.xodr")
+    text = survey(road_map, S).text().split("\n", 1)[1]  # the straight roads only (not the junction counts)
+    golden.check(HERE / "golden" / "Town04.straight.sites", text)  # type: ignore[attr-defined]
+    assert text.count("open median 7.0 m") == 10
+
+
 def test_a_scenario_is_staged_across_a_road_of_several_edges(tmp_path: Path) -> None:
     from sovarc.compiler.lower import lower
     from sovarc.compiler.synth import synthesize

@@ -284,7 +284,10 @@ def test_a_striker_that_clips_the_rear_corner_before_the_collision_area_fails(tm
     plan = clipped_rear_corner()
     verdict = check(emit_files(plan, tmp_path).xosc, plan)
     reasons = failed(verdict)
-    assert set(reasons) == {"first_contact"}
+    assert set(reasons) == {"first_contact", "impact_faces"}  # and its rear is struck, not its side
+    assert reasons["impact_faces"] == (
+        "the victim V2 is hit on its rear-right corner, struck on its rear, not its left or right"
+    )
     assert reasons["first_contact"] == (
         "V1 and V2 first touch at t=3.72 s, before the impact t=4 s, outside C_A: V1 is 3.36 m from it"
     )

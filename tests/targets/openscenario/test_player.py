@@ -61,6 +61,19 @@ def test_a_late_crash_or_an_earlier_other_collision_fails() -> None:
     assert missing.message == "esmini saw no collision between V1 and V2"
 
 
+def test_the_collision_is_judged_against_the_files_first_touch_not_the_impact_time() -> None:
+    # a slow turn: the striker's leading corner touches 0.55 s before its bumper centre meets the
+    # victim's face (the impact time), inside C_A; esmini sees that touch when the file has it
+    seen = [Collision(11.45, "V1", "V2")]
+    (early, _) = judge_collisions(seen, "V1", "V2", 12.0)
+    assert not early.passed
+    (at_touch, _) = judge_collisions(seen, "V1", "V2", 12.0, touch=11.44)
+    assert at_touch.passed
+    assert at_touch.message == "esmini saw V1 and V2 collide at t=11.45 s (the file's bodies first touch at 11.44 s)"
+    (off, _) = judge_collisions(seen, "V1", "V2", 12.0, touch=10.8)
+    assert not off.passed
+
+
 def test_the_command_runs_headless_with_collision_detection(tmp_path: Path) -> None:
     command = esmini_command("/opt/esmini/bin/esmini", tmp_path / "scenario.xosc", tmp_path / "log.txt")
     assert command[:4] == ["/opt/esmini/bin/esmini", "--headless", "--osc", str(tmp_path / "scenario.xosc")]
