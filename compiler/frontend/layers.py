@@ -128,6 +128,8 @@ _CUES: dict[str, str] = {
     r"other lane|crossed over",
     "cross": r"cross|walk|ran\b|running|enter|step|dart",
     "walk": r"walk|jog|ran\b|running|along|standing",
+    "reverse": r"\bback|revers|rearward",
+    "parked": r"\bpark|stationary|standing|unoccupied|curb",
 }
 # An action under one of these words was meant or feared, not done ("intending to turn left").
 _INTENTION = re.compile(

@@ -18,7 +18,7 @@ from sovarc.compiler.frontend import FrontEnd, FrontEndError
 from sovarc.compiler.frontend.cache import CachedProvider
 from sovarc.compiler.frontend.defaults import apply_defaults
 from sovarc.compiler.frontend.hybrid import AnswerError, merge, parse_answer
-from sovarc.compiler.frontend.layers import motion_layer
+from sovarc.compiler.frontend.layers import cue, motion_layer, states_action
 from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.rules import extract
 from sovarc.dsl import read_source, to_text, verify
@@ -313,3 +313,15 @@ def test_entering_and_leaving_the_road_exclude_each_other() -> None:
     merged, notes = merge(rules, parse_answer(leave, ["V1", "V2"], shown), shown)
     assert [a.kind for a in merged.participant("V1").known_actions] == ["drive_into"]
     assert "V1 actions: the model read drive_off, the rules drive_into; kept the rules" in notes
+
+
+@pytest.mark.parametrize("kind", list(ActionKind))
+def test_every_action_kind_has_cue_words_for_its_evidence(kind: ActionKind) -> None:
+    stated = {
+        ActionKind.REVERSE: "V2 was backing out of a driveway.",
+        ActionKind.PARKED: "V2 was parked at the curb.",
+    }
+    assert cue(kind.value).pattern
+    if kind in stated:
+        assert states_action(stated[kind], kind.value)
+        assert not states_action("V2 was traveling north in the right lane.", kind.value)
