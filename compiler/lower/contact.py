@@ -3,7 +3,9 @@
 At impact the striker's front-bumper centre touches the face of the victim the crash type
 names: its rear (rear_end), its front (frontal) or the middle of its side (side). With the
 victim's line V and its body length L, that face is at V(u) where u = s_v - k L and
-k = 1, 0, 1/2; so a contact is a point where the striker's line meets the victim's line.
+k = 1, 0, 1/2; so a contact is a point where the striker's line meets the victim's line. A bus
+or truck faces the way its rear axle trails (Route.facing), metres off its path in a bend: its
+face is placed k L behind its front along that heading, as synthesis and the oracles place it.
 Lines meet in two ways:
 
 - a crossing: one point (s_striker, u), the lines at an angle;
