@@ -4,8 +4,9 @@ oracles (esmini's too when it is found), the maps the moves were built on beside
     python benchmarks/bench_backing.py [-m MAP]... [--roads 3] [--out DIR]
 
 The moves are the three examples (backing into the car stopped behind, backing out of a kerbside
-space into a passing car, a parked car struck) and three variants written here (a car struck while
-backing out, a parked car pulling out forwards, a backing car's rear into a crossing pedestrian).
+space into a passing car, a parked car struck) and three variants in examples/variants (a car
+struck while backing out, a parked car pulling out forwards, a backing car's rear into a crossing
+pedestrian), which tests/compiler/lower/test_backing.py reads too.
 Without -m: the example town and CARLA's Town01 (built on), then Town02, Town04, Town07 (held out),
 from $SOVARC_SHARED. Prints one row per move and map, and the CPU time per map; asserts nothing.
 """
@@ -31,58 +32,17 @@ EXAMPLES = [
     "straight_back_out_of_parking_rear_end",
     "straight_parked_car_struck_rear_end",
 ]
-TEMPLATE = """scenario {name} {{
-  environment {{
-    weather clear
-    lighting daylight
-  }}
-  road {{
-    kind straight
-    lanes 2
-    speed_limit 25 mph
-  }}
-  vehicle V1 {{
-    heading north
-    lane 1
-    speed 3 mph
-    actions {{
-      {first}
-    }}
-  }}
-  {other} {{
-    heading {heading}
-    lane {lane}
-    speed {speed}
-    actions {{
-      {second}
-    }}
-  }}
-  crash {{
-    type {crash}
-    striker {striker}
-    victim {victim}
-  }}
-}}
-"""
-VARIANTS = {
-    "struck_backing_out": dict(
-        first="parked\n      reverse", other="vehicle V2", heading="north", lane="1", speed="20 mph",
-        second="follow_lane", crash="rear_end", striker="V2", victim="V1",
-    ),
-    "parked_pulls_out": dict(
-        first="parked\n      drive_into", other="vehicle V2", heading="north", lane="1", speed="20 mph",
-        second="follow_lane", crash="rear_end", striker="V2", victim="V1",
-    ),
-    "backing_into_pedestrian": dict(
-        first="reverse", other="pedestrian P1", heading="east", lane="unknown", speed="unknown",
-        second="cross", crash="side", striker="V1", victim="P1",
-    ),
-}  # fmt: skip
+# written for this benchmark, shared with tests/compiler/lower/test_backing.py
+VARIANTS = [
+    "straight_backing_out_struck_rear_end",
+    "straight_parked_pulls_out_struck_rear_end",
+    "straight_backing_into_pedestrian_side",
+]
 
 
 def scenarios() -> list[tuple[str, str]]:
     found = [(n, (ROOT / "examples" / "scenarios" / f"{n}.sov").read_text()) for n in EXAMPLES]
-    return found + [(n, TEMPLATE.format(name=n, **fields)) for n, fields in VARIANTS.items()]
+    return found + [(n, (ROOT / "examples" / "variants" / f"{n}.sov").read_text()) for n in VARIANTS]
 
 
 def row(name: str, text: str, map_path: Path, roads: int, out: Path) -> str:

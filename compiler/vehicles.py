@@ -103,6 +103,14 @@ class Model:
     drive_wheelbase: float  # of the length
     drive_overhang: float  # of the length, at either end
     limits: Limits = PLANNED
+    # Its plan faces the way its body does, the rear axle trailing the front's path (geometry/trailing.py):
+    # a long wheelbase cuts inside a bend by metres. A shorter body's plan faces along its path, as it always has.
+    trails: bool = False
+
+    @property
+    def axle_reach(self) -> float:
+        """m from the front bumper back to the rear axle."""
+        return (1.0 - self.rear_overhang) * self.body.length
 
 
 CAR_MODEL = Model(
@@ -166,6 +174,7 @@ BUS_MODEL = Model(
     drive_wheelbase=0.6,
     drive_overhang=0.2,
     limits=HEAVY,
+    trails=True,
 )
 TRUCK_MODEL = Model(
     Body(10.0, 2.5, "truck"),
@@ -178,6 +187,7 @@ TRUCK_MODEL = Model(
     drive_wheelbase=0.6,
     drive_overhang=0.2,
     limits=HEAVY,
+    trails=True,
 )
 MOTORCYCLE_MODEL = Model(
     Body(2.2, 0.8, "motorcycle"),

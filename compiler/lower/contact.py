@@ -3,7 +3,9 @@
 At impact the striker's front-bumper centre touches the face of the victim the crash type
 names: its rear (rear_end), its front (frontal) or the middle of its side (side). With the
 victim's line V and its body length L, that face is at V(u) where u = s_v - k L and
-k = 1, 0, 1/2; so a contact is a point where the striker's line meets the victim's line.
+k = 1, 0, 1/2; so a contact is a point where the striker's line meets the victim's line. A bus
+or truck faces the way its rear axle trails (Route.facing), metres off its path in a bend: its
+face is placed k L behind its front along that heading, as synthesis and the oracles place it.
 Lines meet in two ways:
 
 - a crossing: one point (s_striker, u), the lines at an angle;
@@ -99,19 +101,29 @@ def contacts(striker: Route, victim: Route, crash: CrashType, *, whole: bool = F
     side = crash is CrashType.SIDE
     if whole or not (striker.manoeuvres or victim.manoeuvres):
         faces = [face * victim.body.length for face in TURNING_SIDE] if side and not whole else [k]
-        mine, theirs = _View.of_line(striker), _View.of_line(victim)
-        found = list(dict.fromkeys(c for back in faces for c in _meetings(mine, theirs, back, side)))
+        mine = _View.of_front(striker)
+        if victim.trails:  # each face placed from the heading: k is in the view
+            fronts = _View.of_body(victim, 0.0)
+            met = (c for back in faces for c in _meetings(mine, _View.of_body(victim, back), 0.0, side, fronts))
+        else:
+            theirs = _View.of_line(victim)
+            met = (c for back in faces for c in _meetings(mine, theirs, back, side, theirs))
+        found = list(dict.fromkeys(met))
     else:
         lead = striker.body.length if backing else 0.0
-        mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_line(striker)
+        mine = _View.after_turns(striker, lead) if striker.manoeuvres else _View.of_front(striker)
         found = []
         for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[named],):
+            fronts: _View | None = None  # the victim's front bumper's line, when it has one
             if victim.manoeuvres:  # the face itself: k is in the view
                 theirs, back = _View.after_turns(victim, face * victim.body.length), 0.0
+            elif victim.trails:
+                theirs, back = _View.of_body(victim, face * victim.body.length), 0.0
+                fronts = _View.of_body(victim, 0.0)
             else:
                 theirs, back = _View.of_line(victim), face * victim.body.length
-            front = not victim.manoeuvres  # the victim's view is its front bumper's line
-            found += [_on_routes(c, mine, theirs) for c in _meetings(mine, theirs, back, side, front)]
+                fronts = theirs
+            found += [_on_routes(c, mine, theirs) for c in _meetings(mine, theirs, back, side, fronts)]
     found = [c for c in found if _accepts(crash, c)]
     preference = {
         CrashType.REAR_END: lambda c: (c.kind != "shared", c.angle, -c.hi),
@@ -163,6 +175,24 @@ class _View:
         return cls(points, s, _headings(points), route.body)
 
     @classmethod
+    def of_body(cls, route: Route, back: float) -> _View:
+        """Where the point `back` metres behind the front bumper, along the heading the body faces, is
+        when the front is at each arc length: a trailing body's faces lie along its heading, which in a
+        bend is tens of degrees off its front's path (a victim's side met mid-turn is metres from where
+        a body laid along the path puts it). Compared by the way it faces, as every oracle does."""
+        line = route.line.offset(-route.kerb) if route.kerb else route.line
+        s = np.arange(0.0, line.length + 1e-9, STEP)
+        headings = route.facing(s)
+        rad = np.radians(headings)
+        points = line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
+        return cls(points, s, headings, route.body)
+
+    @classmethod
+    def of_front(cls, route: Route) -> _View:
+        """A route's front bumper as it leads forwards: on its line, facing the way its body does."""
+        return cls.of_body(route, 0.0) if route.trails else cls.of_line(route)
+
+    @classmethod
     def after_turns(cls, route: Route, back: float) -> _View:
         """From the last stop of its three-point turns on: where the point `back` metres behind the
         front bumper, along the heading, is when the front is at each arc length. On a turn's last
@@ -184,9 +214,11 @@ def _on_routes(c: Contact, striker: _View, victim: _View) -> Contact:
     return replace(c, lo=c.lo + striker.shift, hi=c.hi + striker.shift, offset=offset)
 
 
-def _meetings(striker: _View, victim: _View, k: float, side: bool = False, front: bool = True) -> list[Contact]:
+def _meetings(
+    striker: _View, victim: _View, k: float, side: bool = False, fronts: _View | None = None
+) -> list[Contact]:
     """The contacts of the two views' lines; `k` m behind the victim's point is the face met, and
-    `front`: the victim's points are its front bumper's (else its face's already)."""
+    `fronts`: the victim's front bumper at the same arc lengths, where it has one (not over a turn in legs)."""
     a, sa, ha = striker.points, striker.s, striker.headings
     b, sb, hb = victim.points, victim.s, victim.headings
     d = np.hypot(a[:, None, 0] - b[None, :, 0], a[:, None, 1] - b[None, :, 1])
@@ -210,9 +242,9 @@ def _meetings(striker: _View, victim: _View, k: float, side: bool = False, front
                 Contact(float(sa[face_lo]), float(sa[face_hi]), sign, offset, 0.0 if same else 180.0, "shared")
             )
         close[lo : hi + 1] = False
-        if same and side and front:
+        if same and side and fronts is not None:
             # a side crash on a vehicle turning off: met where its side lies across the striker's line
-            turned = _turned_side(striker, victim, hi, int(nearest[hi]))
+            turned = _turned_side(striker, fronts, hi, int(nearest[hi]))
             if turned is not None:
                 s_striker, u, turn = turned
                 found.append(Contact(s_striker, s_striker, 0, u, turn, "crossing"))

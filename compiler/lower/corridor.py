@@ -88,6 +88,7 @@ class Drive:
     manoeuvres: list[Manoeuvre] = field(default_factory=list)  # three-point turns, on `line`
     body: Body = CAR  # what drives it: the room a turn needs is its body's
     junction: tuple[float, float] | None = None  # where its junction move begins and ends on `line`
+    wide: bool = False  # it takes the junction's corner wide (wide.py), moving out of its lane before it
 
     def __post_init__(self) -> None:
         self._use(self.corridor.own[self.lane - 1])

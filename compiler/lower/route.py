@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.geometry.trailing import trailing_headings
 from sovarc.compiler.vehicles import PLANNED, Body, model
 from sovarc.dsl.ir import Action, ActionKind, Participant
 
@@ -22,6 +23,7 @@ CHANGE_TIME = 3.0  # s: a lane change takes about this long
 MIN_CHANGE = 25.0  # m: the shortest lane change
 MANOEUVRE_SPEED = 2.5  # m/s: the legs of a three-point turn are driven at walking pace
 CAP_REACH = 3.0  # m either side of a leg whose curves cap its speed
+TRAIL_STEP = 0.25  # m between the points a trailing body's heading is computed at (interpolated between)
 
 
 @dataclass(frozen=True)
@@ -88,6 +90,8 @@ class Route:
     caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line
     manoeuvres: tuple[Manoeuvre, ...] = ()  # its three-point turns and its backing, in order
     kerb: float = 0.0  # m its line lies right of its lane's centre line: a car parked at the kerb (`parked`)
+    # a trailing body's heading along its line: the line, and its arc lengths and unwrapped headings
+    trail: tuple[Polyline, np.ndarray] | None = None
 
     def cap_between(self, a: float, b: float) -> float:
         """The lowest curvature speed cap over [a, b] and CAP_REACH beyond, but not beyond a stop
@@ -134,9 +138,25 @@ class Route:
         """Arc lengths where a three-point turn stands: before it and at every change of gear."""
         return sorted(s for m in self.manoeuvres for s in m.stops)
 
+    @property
+    def trails(self) -> bool:
+        """Whether its body faces the way its rear axle trails its front's path (a bus or truck driving
+        forwards throughout, as synthesis and the targets place it; geometry/trailing.py), not along it."""
+        return model(self.body).trails and not self.manoeuvres
+
     def facing(self, at: np.ndarray) -> np.ndarray:
-        """The compass heading the body faces at arc lengths `at`: the line's direction, or over a
-        three-point turn the heading its legs give."""
+        """The compass heading the body faces at arc lengths `at`: the line's direction, a trailing
+        body's heading (its rear axle's tractrix from the line's start), or over a three-point turn
+        the heading its legs give."""
+        if self.trails:
+            if self.trail is None or self.trail[0] is not self.line:
+                s = np.append(np.arange(0.0, self.line.length, TRAIL_STEP), self.line.length)
+                headings = trailing_headings(
+                    self.line.points_at(s), self.line.heading(0.0), model(self.body).axle_reach
+                )
+                self.trail = (self.line, np.vstack([s, np.degrees(np.unwrap(np.radians(headings)))]))
+            s, unwrapped = self.trail[1]
+            return np.interp(at, s, unwrapped) % 360.0
         out = self.line.headings(at)
         for m in self.manoeuvres:
             inside = (at >= m.lo) & (at <= m.hi)

@@ -23,6 +23,7 @@ from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
 from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
+from sovarc.compiler.lower.wide import wide_turn
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.compiler.maps.search import geometric_exit
@@ -176,7 +177,8 @@ def _through_junction(
     index = move_at if move_at is not None else -1
     turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map, index)
     entry = drive.line.length
-    own = () if drive.against or move is ActionKind.U_TURN else arm.incoming
+    # a U-turn's or a wrong-way line is laid out, and so is a corner taken wide (its body crosses lane lines)
+    own = () if drive.against or move is ActionKind.U_TURN or drive.wide else arm.incoming
     approach = tuple(lane for lane in own if lane.id in drive.lanes)
     exit_line = exit_corridor.own_line(exit_number)
     joins = exit_line.project(turn.point(turn.length))[0]  # a U-turn may join its lane past the start
@@ -224,16 +226,22 @@ def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participa
     tightest = model(body).limits.path_radius
     if tightest <= PLANNED.path_radius:
         return
-    inside = (line.s >= lo) & (line.s <= hi)
-    radius = float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
+    radius = _radius(line, lo, hi)
     if radius < CORNER_SLACK * tightest:
         raise LoweringError(
             Diagnostic(
                 f"on {site}, {p.id} ({body.vclass}, {body.length:g} m) cannot take the junction's corner: "
-                f"its line bends at a {radius:.1f} m radius, the body's tightest is {tightest:g} m",
+                f"its line bends at a {radius:.1f} m radius, the body's tightest is {tightest:g} m, and the road "
+                "has no room to swing wide through it",
                 p.meta.span,
             )
         )
+
+
+def _radius(line: Polyline, lo: float = 0.0, hi: float = math.inf) -> float:
+    """The tightest bend of `line` between two arc lengths, as the corner check measures it."""
+    inside = (line.s >= lo) & (line.s <= hi)
+    return float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
 
 
 def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
@@ -287,6 +295,14 @@ def _junction_line(
         turn = bezier(end, heading, target.shape[0], Polyline(target.shape).heading(0.0))
     else:
         turn = Polyline([end, *shape, target.shape[0]])
+    tightest = model(drive.body).limits.path_radius
+    if tightest > PLANNED.path_radius and _radius(turn) < CORNER_SLACK * tightest:
+        # a corner drawn for a car: a bus or truck swings wide through it, if the road lets it (wide.py)
+        wide = wide_turn(drive.line, corridor.own_line(target.number), drive.body, road_map)
+        if wide is not None:
+            drive.line, turn, drive.wide = wide.approach, wide.turn, True
+            drive.lanes.update(wide.lanes)
+            drive.notes.append("swings wide through the junction's corner, then back into its lane")
     drive.lanes.update(_via_lanes(road_map, connection))
     drive.edges.extend(edge for edge in connection.edges if edge not in drive.edges)
     return turn, corridor, target.number

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -60,6 +61,11 @@ RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 
 # under load up to a factor of about 2.5.
 TRACKED_MS = 1000
 PLAIN_MS = 3000
+# The limits are of the search's own CPU time, so that a busy machine gives the answer an idle one
+# does (a plan is the same however loaded its batch ran): Z3's clock is wall time, so a search it
+# stops before it has had its CPU time is run again, from a fresh context, with a clock this many
+# times longer, doubling; and an answer found only after its CPU time is taken as none.
+MAX_PATIENCE = 32
 BACKING_FOR = 2.0  # s a backing car is preferred to back at its speed before the crash
 SHALLOW_SIDE = 60.0  # degrees: a side crash at a smaller angle is a sideswipe or a cut-in
 
@@ -148,13 +154,40 @@ class Problem:
 def solve(problem: Problem) -> Solution:
     for t_max in NICE_T_MAX:
         try:
-            return _solve(problem, nice=True, t_max=t_max)
+            return _patiently(problem, nice=True, t_max=t_max)
         except ConflictError as conflict:
             if not conflict.deadline:
                 # The natural passes differ in their deadline alone: constraints that conflict
                 # without it conflict under a later one too, so that pass would only fail again.
                 break
-    return _solve(problem, nice=False, t_max=T_MAX)
+    return _patiently(problem, nice=False, t_max=T_MAX)
+
+
+class _StarvedError(Exception):
+    """A search Z3's clock stopped before it had used its CPU time: the machine was busy."""
+
+
+def _patiently(problem: Problem, nice: bool, t_max: float) -> Solution:
+    """`_solve`, again with a longer clock while the machine's load starves its searches."""
+    patience = 1
+    while True:
+        try:
+            return _solve(problem, nice, t_max, patience)
+        except _StarvedError:
+            patience *= 2
+
+
+def _check(solver: Any, budget_ms: int, patience: int) -> Any:
+    """The solver's answer within `budget_ms` of CPU time (its clock is `patience` times that):
+    unknown when it needed more; _StarvedError when the clock stopped it first, unless patience is out."""
+    used = time.thread_time()
+    result = solver.check()
+    used = (time.thread_time() - used) * 1000.0
+    if used > budget_ms:
+        return z3.unknown  # an idle machine's clock would have stopped it
+    if result == z3.unknown and solver.reason_unknown() == "timeout" and patience < MAX_PATIENCE:
+        raise _StarvedError
+    return result
 
 
 @dataclass(frozen=True)
@@ -170,7 +203,7 @@ class _Terms:
         return z3.RealVal(value, self.ctx)
 
 
-def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
+def _solve(problem: Problem, nice: bool, t_max: float, patience: int = 1) -> Solution:
     # A fresh context per problem: Z3's choice among models depends on every term its context
     # has seen, so sharing the global one would make a plan depend on what was solved before.
     z = _Terms(z3.Context())
@@ -190,20 +223,20 @@ def _solve(problem: Problem, nice: bool, t_max: float) -> Solution:
     # crossing on a city cluster junction: 38 s); the plain assertions, solved by that engine in
     # milliseconds, take over there. The plain engine is itself lost proving some problems unsat
     # (turns in legs), which the tracked solve settles at once: neither can go alone.
-    solver = _solver(z, TRACKED_MS)
+    solver = _solver(z, TRACKED_MS * patience)
     names: dict[str, str] = {}
     for i, (label, constraint) in enumerate(tracked):
         names[f"{label}#{i}"] = label
         solver.assert_and_track(constraint, z3.Bool(f"{label}#{i}", z.ctx))
-    result = solver.check()
+    result = _check(solver, TRACKED_MS, patience)
     if result == z3.unsat:
         core = {str(b) for b in solver.unsat_core()}
         facts = [problem.facts[label] for label in sorted({names[b] for b in core})]
         raise ConflictError(facts, deadline=deadline in core)
     if result == z3.unknown:
-        solver = _solver(z, PLAIN_MS)
+        solver = _solver(z, PLAIN_MS * patience)
         solver.add(*(constraint for _, constraint in tracked))
-        result = solver.check()
+        result = _check(solver, PLAIN_MS, patience)
     if result == z3.sat:
         return _values(solver.model(), motions, t_hit, problem, relaxed=not nice)
     if result == z3.unsat:  # proved by the plain engine alone: every fact is named

@@ -14,8 +14,10 @@ the crash type needs (impact.py).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
+from sovarc.compiler.geometry.trailing import trailing_headings
 from sovarc.compiler.lower import Lowered
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.solve import AFTER_CRASH
@@ -83,6 +85,12 @@ def _trajectory(
     for t, si, vi in zip(times, s, v, strict=True):
         x, y, heading, scale = path.pose(float(si))
         samples.append(Sample(float(t), x, y, heading, float(vi) * scale * path.gear(float(si))))
+    kind = model(route.body)
+    if vehicle and kind.trails and all(sample_.speed >= 0.0 for sample_ in samples):
+        # a long body faces the way its rear axle trails, not along its front's path (trailing.py)
+        points = np.array([(sample_.x, sample_.y) for sample_ in samples])
+        headings = trailing_headings(points, samples[0].heading, kind.axle_reach)
+        samples = [replace(sample_, heading=float(h)) for sample_, h in zip(samples, headings, strict=True)]
     if vehicle:
         _check_drivable(pid, path, s, v, lowered)
         _check_backing(pid, route, times, s, v, lowered)

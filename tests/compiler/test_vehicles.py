@@ -30,3 +30,10 @@ def test_sizes_order_as_on_the_road() -> None:
     assert length["bicycle"] < length["motorcycle"] < length["car"] < length["van"] < length["pickup"]
     assert length["pickup"] < length["truck"] <= length["bus"]
     assert model_of("unknown") is CAR_MODEL and model_of(VehicleKind.CAR) is CAR_MODEL
+
+
+def test_only_heavy_bodies_are_planned_facing_the_way_their_rear_axle_trails() -> None:
+    """A car's plan faces along its path, as it always has; a bus's or truck's the way its body does."""
+    assert {k for k, row in MODELS.items() if row.trails} == {"bus", "truck"}
+    for row in MODELS.values():
+        assert 0.5 * row.body.length <= row.axle_reach <= row.body.length

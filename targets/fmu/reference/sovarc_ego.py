@@ -36,6 +36,7 @@ TTC_BRAKE = 1.5  # s, time to collision that triggers full braking
 HORIZON = 3.0  # s, how far ahead it predicts
 TICK = 0.1  # s, its prediction step
 MARGIN = 0.3  # m, added to body radii when predicting contact
+PAST_FRONT = 1.0  # m: the nearest point it steers for lies at least this far ahead of its front bumper
 
 
 class SovarcEgo(Fmi2Slave):
@@ -91,7 +92,8 @@ class SovarcEgo(Fmi2Slave):
 
     def _pursue(self, line):
         """Pure pursuit from the rear axle towards the path point `reach` metres away."""
-        reach = max(6.0, 4.0 + 0.9 * self.ego_speed)
+        # a bus's front lies further from its rear axle than a car's look-ahead: aim past the front, not at it
+        reach = max(6.0, 4.0 + 0.9 * self.ego_speed, self.ego_rear_axle + PAST_FRONT)
         axle = -self.ego_rear_axle
         gx, gy = line.points[-1]
         for px, py in line.points:

@@ -35,6 +35,13 @@ BACK_OUT = "straight_back_out_of_parking_rear_end"
 PARKED_STRUCK = "straight_parked_car_struck_rear_end"
 MOVES = (BACK_INTO_STOPPED, BACK_OUT, PARKED_STRUCK)
 SLACK = 1.1  # synthesis's own slack over a limit
+# the moves' variants, shared with benchmarks/bench_backing.py
+VARIANTS = EXAMPLE_DIR / "variants"
+BACKING = (EXAMPLES / f"{BACK_INTO_STOPPED}.sov").read_text()
+
+
+def _variant(name: str) -> str:
+    return (VARIANTS / f"{name}.sov").read_text()
 
 
 @functools.cache
@@ -136,46 +143,11 @@ def _stage(text: str) -> None:
     next(stagings_on(staged, matches[0], road_map, notes))
 
 
-SCENARIO = """scenario s {{
-  environment {{
-    weather clear
-    lighting daylight
-  }}
-  road {{
-    kind {kind}
-    lanes 2
-    speed_limit 25 mph
-  }}
-  vehicle V1 {{
-    heading north
-    lane 1
-    speed 3 mph
-    actions {{
-      {actions}
-    }}
-  }}
-  vehicle V2 {{
-    heading north
-    lane 1
-    speed 0 mph
-    actions {{
-      stop
-    }}
-  }}
-  crash {{
-    type rear_end
-    striker V1
-    victim V2
-  }}
-}}
-"""
-
-
 def test_backing_is_staged_as_a_first_move_on_a_straight_road_only() -> None:
     with pytest.raises(LoweringError, match="after `parked` or `reverse` only"):
-        _stage(SCENARIO.format(kind="straight", actions="reverse\n      follow_lane"))
+        _stage(BACKING.replace("      reverse\n", "      reverse\n      follow_lane\n"))
     with pytest.raises(LoweringError, match="staged on a straight road only"):
-        _stage(SCENARIO.format(kind="intersection", actions="reverse"))
+        _stage(BACKING.replace("kind straight", "kind intersection"))
 
 
 def test_crash_types_read_for_a_backing_striker() -> None:
@@ -196,53 +168,17 @@ def _first_plan(text: str) -> Plan:
     return stage_on_site(staged, notes, road_map, matches[0])
 
 
-PAIR = """scenario s {{
-  environment {{
-    weather clear
-    lighting daylight
-  }}
-  road {{
-    kind straight
-    lanes 2
-    speed_limit 25 mph
-  }}
-  vehicle V1 {{
-    heading north
-    lane 1
-    speed 3 mph
-    actions {{
-      parked
-      {leaves}
-    }}
-  }}
-  vehicle V2 {{
-    heading north
-    lane 1
-    speed 20 mph
-    actions {{
-      follow_lane
-    }}
-  }}
-  crash {{
-    type rear_end
-    striker V2
-    victim V1
-  }}
-}}
-"""
-
-
 def test_a_car_backing_out_is_struck_in_its_rear() -> None:
     """The victim backs: its faces are named as ever (the passing car's front into its rear), its line
     runs against them."""
-    plan = _first_plan(PAIR.format(leaves="reverse"))
+    plan = _first_plan(_variant("straight_backing_out_struck_rear_end"))
     contact = planned_touch(plan)
     assert contact is not None and backing_at(plan, "V1", contact.time) and not backing_at(plan, "V2", contact.time)
     assert "front" in contact.zones[0] and "rear" in contact.zones[1] and fits(CrashType.REAR_END, contact)
 
 
 def test_a_parked_car_pulls_out_forwards() -> None:
-    plan = _first_plan(PAIR.format(leaves="drive_into"))
+    plan = _first_plan(_variant("straight_parked_pulls_out_struck_rear_end"))
     samples = plan.trajectory("V1").samples
     assert samples[0].speed == 0.0 and min(s.speed for s in samples) >= 0.0 and max(s.speed for s in samples) > 1.0
     contact = planned_touch(plan)
@@ -250,12 +186,7 @@ def test_a_parked_car_pulls_out_forwards() -> None:
 
 
 def test_a_backing_car_strikes_a_crossing_pedestrian_with_its_rear() -> None:
-    text = SCENARIO.format(kind="straight", actions="reverse")
-    text = text.replace("vehicle V2", "pedestrian P1").replace(
-        "heading north\n    lane 1\n    speed 0 mph", "heading east\n    lane unknown\n    speed unknown"
-    )
-    text = text.replace("stop", "cross").replace("type rear_end", "type side").replace("victim V2", "victim P1")
-    plan = _first_plan(text)
+    plan = _first_plan(_variant("straight_backing_into_pedestrian_side"))
     contact = planned_touch(plan)
     assert contact is not None and "rear" in contact.zones[0]
     assert fits(CrashType.SIDE, contact, backing=True)

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.polyline import Polyline
+from sovarc.compiler.geometry.trailing import trailing_headings
 from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, SIDE_TURNED, TURNING_SIDE, contacts, describe
 from sovarc.compiler.lower.route import Route
-from sovarc.compiler.vehicles import CAR
+from sovarc.compiler.vehicles import CAR, model_of
 from sovarc.dsl.ir import CrashType, Participant, Role
 
 
@@ -158,3 +160,44 @@ def test_a_rear_end_in_a_shared_lane_ends_while_the_victim_still_runs_along_it()
         turned = victim.line.heading(rear.victim_s(rear.hi)) - striker.line.heading(rear.hi)
         assert abs(turned) < ALONG
         assert rear.victim_s(rear.hi) <= 40.0 + 0.5  # its front is at most at the corner
+
+
+def _left_turn(pid: str, body: object) -> Route:
+    """North for 40 m, a quarter circle of 12 m to the left, then west: a heavy vehicle's left turn."""
+    arc = [(12.0 * math.cos(a) - 12.0, 40.0 + 12.0 * math.sin(a)) for a in np.linspace(0.0, math.pi / 2, 40)]
+    points = [(0.0, 0.0), *arc, (-60.0, 52.0)]
+    return Route(Participant(pid, Role.VEHICLE), body, Polyline(points), [], (), (), 0.0)  # type: ignore[arg-type]
+
+
+def test_a_trailing_body_faces_its_rear_axles_tractrix_and_a_car_its_line() -> None:
+    truck = model_of("truck")
+    turner = _left_turn("V", truck.body)
+    at = np.arange(0.0, turner.line.length, 0.5)
+    expected = trailing_headings(turner.line.points_at(at), 0.0, truck.axle_reach)
+    assert np.abs((turner.facing(at) - expected + 180.0) % 360.0 - 180.0).max() < 0.5
+    # mid-turn it faces well short of the way its front moves (it turns left: less far round)
+    middle = float(turner.line.s[20])
+    assert (turner.facing(np.array([middle]))[0] - turner.line.heading(middle)) % 360.0 > 15.0
+    car = _left_turn("C", CAR)
+    assert np.array_equal(car.facing(at), car.line.headings(at))
+
+
+@pytest.mark.parametrize("kind", ["truck", "bus"])
+def test_a_trailing_victim_struck_mid_turn_is_met_on_its_side_as_its_body_faces(kind: str) -> None:
+    """An oncoming car crosses a heavy vehicle's left turn: its front is placed on the side of the
+    body as it faces (the rear axle trailing), not of a body laid back along the front's curved path."""
+    victim = _left_turn("V", model_of(kind).body)
+    body = victim.body
+    striker = route("S", (-10.0, 100.0), (-10.0, -20.0))  # south, across the turn's middle
+    found = contacts(striker, victim, CrashType.SIDE)
+    assert found
+    for c in found:
+        front = np.array(striker.line.point(c.lo))
+        u = c.victim_s(c.lo)
+        head = float(victim.facing(np.array([u]))[0])
+        f = np.array(heading_vector(head))
+        rel = np.array(victim.line.point(u)) - front
+        back = float(rel @ f)  # m behind the victim's front, along the way it faces
+        lateral = abs(float(rel[0] * f[1] - rel[1] * f[0]))
+        assert -0.1 <= back <= body.length + 0.1
+        assert lateral <= (body.width + CAR.width) / 2.0

@@ -10,9 +10,10 @@ from pathlib import Path
 import pytest
 import sovarc.compiler.lower as lowering
 import sumo
+import z3
 from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.compiler.lower import lower_on, sites_for
-from sovarc.compiler.lower.solve import NICE_T_MAX, T_MAX, ConflictError, Fact, Problem, Solution
+from sovarc.compiler.lower.solve import MAX_PATIENCE, NICE_T_MAX, T_MAX, ConflictError, Fact, Problem, Solution
 from sovarc.compiler.maps import load_map
 from sovarc.dsl import parse
 
@@ -75,9 +76,9 @@ def test_a_natural_pass_whose_conflict_leaves_out_the_deadline_is_not_tried_agai
     passes: list[float] = []
     solve_pass = solve_module._solve
 
-    def counted(problem: Problem, nice: bool, t_max: float) -> Solution:
+    def counted(problem: Problem, nice: bool, t_max: float, patience: int = 1) -> Solution:
         passes.append(t_max)
-        return solve_pass(problem, nice, t_max)
+        return solve_pass(problem, nice, t_max, patience)
 
     skipped = 0
     for problem in problems:
@@ -88,3 +89,29 @@ def test_a_natural_pass_whose_conflict_leaves_out_the_deadline_is_not_tried_agai
         monkeypatch.setattr(solve_module, "_solve", solve_pass)
         assert outcome == _outcome(_every_pass, problem)
     assert skipped >= 1
+
+
+def _lost(clock_ms: int) -> z3.Solver:
+    """A nonlinear problem Z3 is lost on for far longer than `clock_ms`, under that clock."""
+    x, y, w = z3.Reals("x y w")
+    solver = z3.Solver()
+    solver.set("timeout", clock_ms)
+    solver.add(
+        x * x * x + y * y * y == w * w * w, x > 1, y > 1, w > 1, x * y * w == 1000003, x * x + y == w * w * w * y
+    )
+    return solver
+
+
+def test_a_search_is_judged_by_its_cpu_time_not_by_the_clock() -> None:
+    """Z3's clock is wall time: a search it stops before the search has had its CPU budget was
+    starved by a busy machine and is run again with a longer clock (so a loaded batch plans as an
+    idle one does), until patience runs out; an answer found only past the budget counts as none."""
+    with pytest.raises(solve_module._StarvedError):
+        solve_module._check(_lost(50), 60_000, 1)  # stopped after 50 ms: far short of a minute's CPU
+    assert solve_module._check(_lost(50), 60_000, MAX_PATIENCE) == z3.unknown
+    assert solve_module._check(_lost(200), 20, 1) == z3.unknown  # it had its 20 ms and more
+    x = z3.Real("x")
+    easy = z3.Solver()
+    easy.add(x * x == 2.0, x > 0)
+    assert solve_module._check(easy, 1000, 1) == z3.sat
+    assert solve_module._check(easy, 0, 1) == z3.unknown  # any work at all is past a budget of none
