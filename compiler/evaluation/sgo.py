@@ -219,6 +219,24 @@ def _backing(row: dict[str, str]) -> tuple[Expected, Expected]:
     return _SKIP, _SKIP
 
 
+def _standing_struck(row: dict[str, str], striker: str) -> tuple[Expected, Expected] | None:
+    """The party whose front the areas put in contact stood still (Stopped or Parked) while the other moved:
+    the IR's striker is the one that moved into the other, so it is the mover, whatever part of the standing
+    party it touched. The mover's rear against the standing front is a reversing striker's rear_end; its side
+    against that front (a passing car's side sweeping a stopped car's front corner) is no crash type of the
+    IR, whose types are a striker's leading face meeting the victim, so it is not expressible. None when the
+    rule does not apply."""
+    mover = "CP" if striker == "SV" else "SV"
+    standing = ("Stopped", "Parked")
+    if row.get(f"{striker} Pre-Crash Movement") not in standing:
+        return None
+    if row.get(f"{mover} Pre-Crash Movement") not in _MOVEMENT or row.get(f"{mover} Pre-Crash Movement") in standing:
+        return None  # the other stood too, or what it did is not coded
+    part = _part(_areas(row, mover))
+    kind = Expected(frozenset((CrashType.REAR_END,))) if part == "rear" else _INEXPRESSIBLE if part else _SKIP
+    return kind, Expected(frozenset((mover,)))
+
+
 def contact(row: dict[str, str]) -> tuple[Expected, Expected]:
     """(crash type, striker) from the contact areas; the striker as "SV" or "CP"."""
     if "Backing" in (row.get("SV Pre-Crash Movement"), row.get("CP Pre-Crash Movement")):
@@ -229,6 +247,8 @@ def contact(row: dict[str, str]) -> tuple[Expected, Expected]:
         return Expected(frozenset((CrashType.FRONTAL,))), _SKIP
     if sv_front == cp_front:
         return _SKIP, _SKIP
+    if standing := _standing_struck(row, "SV" if sv_front else "CP"):
+        return standing
     striker, other = ("SV", cp) if sv_front else ("CP", sv)
     part = _part(other)
     kind = {"rear": CrashType.REAR_END, "side": CrashType.SIDE}.get(part or "")

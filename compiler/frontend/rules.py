@@ -459,6 +459,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
+    crash = _standing_struck(people, crash, sents[impact] if impact >= 0 else "")
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)
@@ -494,6 +495,21 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     if crash.victim in backers and crash.striker not in backers:
         return replace(crash, striker=crash.victim, victim=crash.striker)
     return crash
+
+
+def _standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
+    """A vehicle the impact sentence says stood still ("While V1 remained stopped, the trailer of V2 made
+    contact with the front of V1") struck nobody: the striker is the one that moved into it, whichever of its
+    parts the sentence names first. The crash readers take a named front for the striking face."""
+    striker, victim = crash.striker, crash.victim
+    if not isinstance(striker, str) or not isinstance(victim, str) or not _still_at_impact(sentence, striker):
+        return crash
+    moved = next((p for p in people if p.id == victim), None)
+    # (one that stopped earlier may move again in the impact sentence: "V2 proceeded westbound and ..."; one
+    # parked throughout stood too)
+    if moved is None or _still_at_impact(sentence, victim) or [a.kind for a in moved.known_actions] == [ActionKind.PARKED]:
+        return crash
+    return replace(crash, striker=victim, victim=striker)
 
 
 def _with_kinds(people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]) -> list[Participant]:

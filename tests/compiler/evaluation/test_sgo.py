@@ -91,6 +91,29 @@ def test_a_backing_party_leads_with_its_rear_and_is_the_striker(
     assert who.accept == ({"CP"} if kind else set())
 
 
+@pytest.mark.parametrize(
+    ("sv_move", "cp_move", "cp", "kind", "striker"),
+    [
+        # a car parallel parking backs into the stopped automated vehicle's front: the mover strikes, rear first
+        ("Stopped", "Parking Maneuver", ("Rear Left",), {CrashType.REAR_END}, {"CP"}),
+        # a passing car's side sweeps a parked one's front corner: the mover strikes, with no IR crash type
+        ("Parked", "Proceeding Straight", ("Right",), set(), {"CP"}),
+        # both moving: the front in contact is the striker's, as before
+        ("Proceeding Straight", "Changing Lanes", ("Right",), {CrashType.SIDE}, {"SV"}),
+        # both standing: nobody moved into the other as far as the codes say, so the areas decide, as before
+        ("Stopped", "Parked", ("Rear",), {CrashType.REAR_END}, {"SV"}),
+    ],
+)
+def test_a_party_standing_still_strikes_nobody(
+    sv_move: str, cp_move: str, cp: tuple[str, ...], kind: set[CrashType], striker: set[str]
+) -> None:
+    r = contact(("Front Right",), cp, **{"SV Pre-Crash Movement": sv_move, "CP Pre-Crash Movement": cp_move})
+    crash_type, who = sgo.contact(r)
+    assert crash_type.accept == kind
+    assert crash_type.skip == (None if kind else sgo.NOT_EXPRESSIBLE)
+    assert who.accept == striker
+
+
 NARRATIVE = (
     "A Waymo Autonomous Vehicle was stopped at a red light on [XXX] when a passenger car approached from behind "
     "and made contact with the rear bumper of the Waymo AV. It was raining."

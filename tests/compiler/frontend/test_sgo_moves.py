@@ -235,3 +235,26 @@ def test_a_center_lane_is_no_line_between_the_directions() -> None:
         "the center lane, made contact with the rear of the Waymo AV."
     )
     assert ActionKind.RETROGRADE not in kinds(s, "V2")
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        "While the Waymo AV remained stopped, the sedan pulled forward and the rear of its trailer made contact "
+        "with the front bumper of the Waymo AV",
+        "The sedan swung wide and its passenger side made contact with the front corner of the stationary Waymo AV",
+    ],
+)
+def test_a_party_standing_still_is_struck_whatever_part_is_named_first(impact: str) -> None:
+    """The crash readers take a named front for the striking face; a vehicle said to stand still at the impact
+    struck nobody, so the one that moved is the striker."""
+    s = read(OPENING + f"The Waymo AV was traveling west on [XXX] and came to a stop behind the sedan. {impact}.")
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+def test_a_moving_party_named_by_its_front_still_strikes() -> None:
+    s = read(
+        OPENING + "The Waymo AV was traveling west on [XXX] when the front of the Waymo AV made contact with the "
+        "rear of the stationary sedan."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V1", "V2")
