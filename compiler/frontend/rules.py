@@ -507,7 +507,8 @@ def _standing_struck(people: list[Participant], crash: Crash, sentence: str) -> 
     moved = next((p for p in people if p.id == victim), None)
     # (one that stopped earlier may move again in the impact sentence: "V2 proceeded westbound and ..."; one
     # parked throughout stood too)
-    if moved is None or _still_at_impact(sentence, victim) or [a.kind for a in moved.known_actions] == [ActionKind.PARKED]:
+    parked = [a.kind for a in moved.known_actions] == [ActionKind.PARKED] if moved else False
+    if moved is None or _still_at_impact(sentence, victim) or parked:
         return crash
     return replace(crash, striker=victim, victim=striker)
 
