@@ -23,7 +23,8 @@ _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
-    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended"
+    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*(?! (?:areas?|points?|zones?)\b)|collid\w+|hit"
+    r"|crash\w+ into|collision|rear[- ]ended"
     r"|" + MOVED_INTO + r")\b",
     re.IGNORECASE,
 )
