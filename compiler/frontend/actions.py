@@ -98,7 +98,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
-            r"|\bfrom (?:a|the) (?:private )?drive(?:way)?\b"
+            r"|\bfrom (?:a|the) (?:private )?(?:drive(?:way)?|parking (?:lot|garage|structure))\b"
+            # into the flow of traffic, or onto the road itself, from wherever it stood off it: "attempting to
+            # enter traffic", "maneuvered into the roadway" (not "into the intersection": that is crossing)
+            r"|\benter(?:ed|ing|s)? (?:the )?(?:flow of )?traffic\b"
+            r"|\b(?:maneuver|manoeuvr|pull|mov)\w* (?:out )?(?:in)?to the (?:road(?:way)?|street)\b"
             r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
             # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
             # "departing a parking space", "pulled out of the parked position"

@@ -262,7 +262,7 @@ def read_sentence(
     only_front = parts and all(w == striker and k is CrashType.FRONTAL for _, w, k in parts)
     if kind is None and hit and only_front and all(at > hit.end() for at, _, _ in parts):
         kind = CrashType.SIDE
-    if kind is None and "rear-ended" in sentence.lower():
+    if kind is None and re.search(r"\brear-end(?:ed|ing|s)?\b", sentence, re.I):  # "before rear-ending V1"
         kind = CrashType.REAR_END
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)
 

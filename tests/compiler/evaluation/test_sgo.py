@@ -49,6 +49,9 @@ def test_movements_map_to_actions_backing_and_parked_included() -> None:
     assert sgo.movement(row(**{"CP Pre-Crash Movement": "Backing"}), "CP").accept == {ActionKind.REVERSE}
     assert ActionKind.PARKED in sgo.movement(row(**{"SV Pre-Crash Movement": "Parked"}), "SV").accept
     assert sgo.movement(row(**{"SV Pre-Crash Movement": "Other, see Narrative"}), "SV").skip == sgo.NOT_SCORED
+    # an overtake through the opposing lane is driving in a lane of the opposite direction in the IR
+    passing = sgo.movement(row(**{"CP Pre-Crash Movement": "Passing"}), "CP").accept
+    assert passing == {ActionKind.FOLLOW_LANE, ActionKind.CHANGE_LANE, ActionKind.RETROGRADE}
 
 
 def test_the_partner_kind_comes_from_crash_with() -> None:

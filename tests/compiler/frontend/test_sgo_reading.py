@@ -124,3 +124,26 @@ def test_moving_off_after_a_stop_and_going_around() -> None:
         "and the passenger side of the SUV made contact with the rear driver side of the stationary Waymo AV."
     )
     assert last(s, "V2") is ActionKind.CHANGE_LANE
+
+
+@pytest.mark.parametrize(
+    "came",
+    [
+        "a sedan, attempting to enter traffic from a gas station on the right, entered the Waymo AV's path",
+        "a sedan pulling out from a parking garage on the right moved into the path of the Waymo AV",
+        "a sedan stopped at the curb ahead maneuvered into the roadway",
+    ],
+)
+def test_a_partner_entering_the_road_from_off_it(came: str) -> None:
+    """Joining the flow of traffic, or moving onto the road itself, from where it stood off it is `drive_into`;
+    "traffic" it joins is no other road user, and a party whose path it entered is its object."""
+    s = read(f"The Waymo AV was traveling north on [XXX] when {came}, and the sedan made contact with the Waymo AV.")
+    assert last(s, "V2") is ActionKind.DRIVE_INTO
+
+
+def test_rear_ending_says_the_crash_type_in_any_form() -> None:
+    s = read(
+        "The Waymo AV was traveling south on [XXX]. A police report later gave the sedan's failure to keep its "
+        "distance before rear-ending the Waymo AV as the cause."
+    )
+    assert s.crash.type is CrashType.REAR_END
