@@ -133,6 +133,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
                 r"\b(?:to|on|at) (?:the )?$", sentence[: m.start("part")], re.I
             ):
                 continue
+            # "maneuvered around the left side of V1", "passed along the driver side of V1": the way it went
+            if re.search(
+                r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I
+            ):
+                continue
             if (kind := _kind(m.group("part"))) is not None:
                 parts.append((m.start(), m.group("v"), kind))
     for m in _OWN_PART.finditer(sentence):
@@ -141,7 +146,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
             parts.append((m.start(), subject, kind))
     for m in _OBJECT_ITS.finditer(sentence):
         # "V2 ... made contact with its front passenger side": "its" is the other one named, not the subject
-        before = _names(sentence[: m.start()])
+        # (the subject of the contact is the last one named before it as a subject: not "V1" in "V2 reversed
+        # into V1, making contact with its front bumper", whose "its" is V1's)
+        before = [
+            n.group() for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)
+        ]
         owner = next((n for n in _names(sentence) if before and n != before[-1]), None)
         if owner is not None and (kind := _kind(m.group("part"))) is not None:
             parts.append((m.start("part"), owner, kind))

@@ -258,3 +258,22 @@ def test_a_moving_party_named_by_its_front_still_strikes() -> None:
         "rear of the stationary sedan."
     )
     assert (s.crash.striker, s.crash.victim) == ("V1", "V2")
+
+
+def test_a_side_gone_around_is_the_way_not_the_part_met() -> None:
+    """ "around the left side of V1" says where the other went; the part met is the one the contact names."""
+    s = read(
+        OPENING + "While the Waymo AV remained stopped, the sedan maneuvered around the left side of the Waymo AV "
+        "and the front passenger side of the sedan made contact with the rear driver side of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.type) == ("V2", CrashType.REAR_END)
+
+
+def test_its_part_after_a_move_into_the_other_is_the_others() -> None:
+    """In "the sedan reversed into the Waymo AV, making contact with its front bumper", the contact's subject is
+    the sedan (the Waymo AV is the object of "into"), so "its" is the Waymo AV's: a reversing rear into a front."""
+    s = read(
+        OPENING + "The Waymo AV came to a stop behind the sedan. The sedan reversed into the Waymo AV, making "
+        "contact with its front bumper."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
