@@ -133,6 +133,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
                 r"\b(?:to|on|at) (?:the )?$", sentence[: m.start("part")], re.I
             ):
                 continue
+            # "passing V1 on the left side": the side it passed by, as with a bare side (see `_OWNED`)
+            if pattern is _OWNED[2] and re.search(
+                r"\bpass(?:ed|es|ing)?(?: by)? (?:the )?(?:\w+ )?$", sentence[: m.start()]
+            ):
+                continue
             # "maneuvered around the left side of V1", "passed along the driver side of V1": the way it went
             if re.search(
                 r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I

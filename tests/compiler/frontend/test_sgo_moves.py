@@ -277,3 +277,11 @@ def test_its_part_after_a_move_into_the_other_is_the_others() -> None:
         "contact with its front bumper."
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+def test_the_side_a_party_passed_on_is_no_part_met() -> None:
+    s = read(
+        OPENING + "The Waymo AV began a left lane change, and the front passenger side of the sedan, which was "
+        "passing the Waymo AV on the left side, made contact with the front driver side of the Waymo AV."
+    )
+    assert s.crash.type is CrashType.FRONTAL
