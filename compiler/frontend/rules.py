@@ -451,6 +451,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
+    people = _introduced_parked(people, prepared.words, named, spots)
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
@@ -511,6 +512,26 @@ def _standing_struck(people: list[Participant], crash: Crash, sentence: str) -> 
     if moved is None or _still_at_impact(sentence, victim) or parked:
         return crash
     return replace(crash, striker=victim, victim=striker)
+
+
+def _introduced_parked(
+    people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
+) -> list[Participant]:
+    """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
+    passenger vehicle"): the words that introduce a road user state what it was doing, so it stood parked.
+    `words` are the words each party numbered by rule was first named by (see `names.parties`)."""
+    out = []
+    for p in people:
+        first = re.search(rf"\b{p.id}\b", named)
+        if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
+            out.append(p)
+            continue
+        if not re.search(r"\bparked\b", words.get(p.id, ""), re.I):
+            out.append(p)
+            continue
+        spots.append((f"{p.id}.actions[1]", "named", *first.span()))
+        out.append(replace(p, actions=(Action(ActionKind.PARKED),)))
+    return out
 
 
 def _with_kinds(people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]) -> list[Participant]:

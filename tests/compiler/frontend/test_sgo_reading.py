@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd
-from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Scenario, Unknown
+from sovarc.dsl.ir import Action, ActionKind, CrashType, Lighting, Scenario, Unknown
 from sovarc.dsl.span import Source
 
 SUMMARY = (
@@ -147,3 +147,23 @@ def test_rear_ending_says_the_crash_type_in_any_form() -> None:
         "distance before rear-ending the Waymo AV as the cause."
     )
     assert s.crash.type is CrashType.REAR_END
+
+
+def test_a_partner_introduced_as_parked_stood_parked() -> None:
+    """Nothing is said of the sedan before the impact but the words that introduce it: "a parked sedan"."""
+    s = read(
+        "An Acme AV operating in autonomous mode was in a collision involving an empty parked sedan. While backing "
+        "out of a driveway, the Acme AV made contact with the rear door of an empty parked sedan."
+    )
+    p = next(p for p in s.participants if p.id == "V2")
+    assert p.actions == (Action(ActionKind.PARKED),)
+    assert s.provenance is not None
+    assert any(e.fact == "V2.actions[1]" and "parked" in e.quote for e in s.provenance.evidence)
+
+
+def test_a_partner_introduced_without_a_state_stays_unknown() -> None:
+    s = read(
+        "An Acme AV operating in autonomous mode was in a collision involving a sedan. While backing out of a "
+        "driveway, the Acme AV made contact with the rear door of a sedan."
+    )
+    assert isinstance(next(p for p in s.participants if p.id == "V2").actions, Unknown)
