@@ -63,7 +63,7 @@ _IMPACT = re.compile(
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
 _SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
-_THING = re.compile(
+THING = re.compile(
     r"\b(?:an?|the) " + _MODS + r"(animal|dog|cat|deer|bird|pole|tree|bollard|curb|barrier|debris|tire shreds|"
     r"cone|gate|sign|fence|wall|hydrant|pothole|shopping cart|object)s?\b",
     re.I,
@@ -250,7 +250,7 @@ def partner_refusal(named: str, note: str | None) -> str | None:
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
     for sentence in sentences(named):
-        if _IMPACT.search(sentence) and (m := _THING.search(sentence)):
+        if _IMPACT.search(sentence) and (m := THING.search(sentence)):
             return (
                 f"the crash partner ('{m.group()}') is not a road user; the scenario IR holds vehicles and "
                 "pedestrians only"

@@ -285,3 +285,14 @@ def test_the_side_a_party_passed_on_is_no_part_met() -> None:
         "passing the Waymo AV on the left side, made contact with the front driver side of the Waymo AV."
     )
     assert s.crash.type is CrashType.FRONTAL
+
+
+def test_an_animal_struck_first_is_not_the_crash() -> None:
+    """The crash is the first impact between road users; what the sedan did before it counts."""
+    s = read(
+        OPENING + "The Waymo AV was traveling north on [XXX] when a dog ran into the road and the front of the Waymo "
+        "AV made contact with the dog. The Waymo AV came to a stop. The sedan traveling directly behind the "
+        "Waymo AV then made contact with the rear of the stationary Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+    assert kinds(s, "V2") == [ActionKind.FOLLOW_LANE]
