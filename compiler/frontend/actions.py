@@ -151,7 +151,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.FOLLOW_LANE,
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
+            r"advanc|go\b|pass|drive|driving)\w*"
+            r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
+            # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
+            r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
             r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",

@@ -167,3 +167,12 @@ def test_a_partner_introduced_without_a_state_stays_unknown() -> None:
         "driveway, the Acme AV made contact with the rear door of a sedan."
     )
     assert isinstance(next(p for p in s.participants if p.id == "V2").actions, Unknown)
+
+
+@pytest.mark.parametrize("moved", ["then pulled slightly forward", "then proceeded westbound"])
+def test_moving_off_again_said_with_how_or_where(moved: str) -> None:
+    s = read(
+        "The Waymo AV was stopped on [XXX] for a passenger pickup. A sedan stopped beside the Waymo AV. The sedan "
+        f"{moved} and its passenger side made contact with the driver side of the stationary Waymo AV."
+    )
+    assert last(s, "V2") is ActionKind.FOLLOW_LANE
