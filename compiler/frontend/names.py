@@ -44,11 +44,11 @@ _AV = re.compile(
     r"\b(?![\w-])|\b(?i:our) (?:vehicle|car|truck|shuttle)\b"
 )
 # "A Zoox vehicle in autonomous mode", "an Aurora truck ... in autonomy": a brand's vehicle, when the report
-# says its vehicle drove itself.
+# says its vehicle drove itself, or was driven in manual mode (a mode only an automated vehicle has).
 _BRAND = re.compile(
     r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
 )
-_AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b", re.I)
+_AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b|\bmanual mode\b", re.I)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)

@@ -77,3 +77,17 @@ def test_a_bare_the_vehicle_points_back_and_a_described_one_is_new() -> None:
         "contact with the rear bumper of the Waymo AV."
     )
     assert new is not None and "V2 'The vehicle'" in new and "V2 immediately behind V1" in text
+
+
+def test_a_brand_vehicle_driven_in_manual_mode_is_the_automated_vehicle() -> None:
+    """Manual mode is a mode only an automated vehicle has: "an Acme vehicle ... in manual mode" is V1."""
+    text, note = label_parties(
+        "An Acme vehicle was being driven in manual mode on [XXX] when contact was made with the mirror of a parked "
+        "van."
+    )
+    assert text.startswith("V1 was being driven") and note is not None and "V2 'a parked van'" in note
+
+
+def test_a_brand_vehicle_with_no_word_of_automation_is_not_taken_for_one() -> None:
+    text, _ = label_parties("An Acme vehicle was driven on [XXX] when it struck a parked van.")
+    assert "V1" not in text
