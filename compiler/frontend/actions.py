@@ -262,7 +262,12 @@ _INTO_PLACE = re.compile(
 )
 # A state said before another party's name qualifies that party, not the one the piece is about: "V2 made
 # contact with the rear of the stationary V1", "as V2 passed the parked V1".
-_QUALIFIED = re.compile(r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$)", re.I)
+# So is one before another road user's noun: "around its stopped lead vehicle", "a stopped car ahead".
+_QUALIFIED = re.compile(
+    r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$"
+    r"| (?:[\w-]+ )?(?:vehicles?|cars?|traffic|trucks?|bus(?:es)?|vans?|suvs?|sedans?|pickups?)\b)",
+    re.I,
+)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
 # "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.

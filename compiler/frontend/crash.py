@@ -162,6 +162,11 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
     return sorted(set(parts))
 
 
+def agent_named(sentence: str) -> bool:
+    """Whether the sentence names its striker as the agent of a passive strike ("struck by the front of V1")."""
+    return bool(_AGENT.search(sentence) or _AGENT_OWNED.search(sentence))
+
+
 def _leads(who: str, kind: CrashType, backing: frozenset[str]) -> bool:
     """Whether the part is the end its vehicle moved with: the front, or the rear of one backing."""
     return kind is (CrashType.REAR_END if who in backing else CrashType.FRONTAL)

@@ -16,7 +16,7 @@ from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import read_crash, read_crash_at
+from sovarc.compiler.frontend.crash import agent_named, read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
@@ -499,19 +499,47 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
 
 
 def _standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
-    """A vehicle the impact sentence says stood still ("While V1 remained stopped, the trailer of V2 made
-    contact with the front of V1") struck nobody: the striker is the one that moved into it, whichever of its
-    parts the sentence names first. The crash readers take a named front for the striking face."""
+    """A vehicle that stood still at the impact struck nobody: the striker is the one that moved into it,
+    whichever of its parts the sentence names first (the crash readers take a named front for the striking
+    face). It stood still when the impact sentence says so ("While V1 remained stopped", "the stationary V1"),
+    or when its actions end standing (stopped for a pickup, parked) and the other's end in a move ("V1 was
+    stopped for a passenger pickup when V2 ... maneuvered to pass V1"). Not when the sentence names it the
+    agent ("it was struck by the front left of V1": it moved off again) or its front the strike's subject."""
     striker, victim = crash.striker, crash.victim
-    if not isinstance(striker, str) or not isinstance(victim, str) or not _still_at_impact(sentence, striker):
+    if not isinstance(striker, str) or not isinstance(victim, str):
         return crash
-    moved = next((p for p in people if p.id == victim), None)
+    if agent_named(sentence) or _front_strikes(sentence, striker):
+        return crash
+    by_id = {p.id: p for p in people}
+    stood, moved = by_id.get(striker), by_id.get(victim)
+    if stood is None or moved is None:
+        return crash
+    if not _still_at_impact(sentence, striker):
+        standing = (ActionKind.STOP, ActionKind.PARKED)
+        if not stood.known_actions or not moved.known_actions:
+            return crash
+        if stood.known_actions[-1].kind not in standing or moved.known_actions[-1].kind in standing:
+            return crash
     # (one that stopped earlier may move again in the impact sentence: "V2 proceeded westbound and ..."; one
     # parked throughout stood too)
-    parked = [a.kind for a in moved.known_actions] == [ActionKind.PARKED] if moved else False
-    if moved is None or _still_at_impact(sentence, victim) or parked:
+    if _still_at_impact(sentence, victim) or [a.kind for a in moved.known_actions] == [ActionKind.PARKED]:
         return crash
     return replace(crash, striker=victim, victim=striker)
+
+
+def _front_strikes(sentence: str, pid: str) -> bool:
+    """Whether the sentence makes the participant's front the subject of the strike."""
+    return bool(
+        re.search(
+            rf"\bfront\b[\w' -]{{0,30}}? of (?:the )?(?:\w+ )?{pid}\b[^.;]{{0,30}}?"
+            r"\b(?:made contact|struck|hit|impacted|contacted|collided)\b",
+            sentence,
+            re.I,
+        )
+        or re.search(
+            rf"\b{pid}'s front\b[^.;]{{0,30}}?\b(?:made contact|struck|hit|impacted|contacted|collided)\b", sentence
+        )
+    )
 
 
 def _introduced_parked(

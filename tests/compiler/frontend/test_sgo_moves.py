@@ -296,3 +296,38 @@ def test_an_animal_struck_first_is_not_the_crash() -> None:
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
     assert kinds(s, "V2") == [ActionKind.FOLLOW_LANE]
+
+
+def test_a_party_whose_actions_end_standing_is_struck() -> None:
+    """Stopped for a pickup in an earlier clause, the Waymo AV stood at the impact; the sedan passing it moved
+    into it, though the only part named is the Waymo AV's front corner."""
+    s = read(
+        OPENING + "The Waymo AV was stopped on [XXX] for a passenger pickup when the sedan behind it maneuvered to "
+        "pass the Waymo AV on the left. As it did so, the passenger side of the sedan made contact with the front "
+        "driver side corner of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        # the sentence names it the agent: it moved off again
+        "The Waymo AV was stopped at the light when the sedan pulled out and was struck by the front of the Waymo AV",
+        # the sentence makes its front the subject of the strike
+        "The Waymo AV was stopped at the light when the sedan pulled out. The front of the Waymo AV made contact "
+        "with the side of the sedan",
+    ],
+)
+def test_a_party_said_to_strike_with_its_front_keeps_striking(impact: str) -> None:
+    s = read(OPENING + impact + ".")
+    assert s.crash.striker == "V1"
+
+
+def test_another_road_users_state_is_not_the_subjects() -> None:
+    """ "around its stopped lead vehicle": the stop is the lead vehicle's, the lane change the subject's."""
+    s = read(
+        OPENING + "The Waymo AV began a right lane change to proceed around its stopped lead vehicle and made "
+        "contact with the sedan traveling in the right adjacent lane."
+    )
+    assert kinds(s, "V1")[-1] is ActionKind.CHANGE_LANE
