@@ -310,7 +310,10 @@ def what_was_done(text: str) -> str:
 
     text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
-    text = _QUALIFIED.sub(" ", text)
+    # (not a participant's own apposition: "V2, a legally parked sedan,")
+    text = _QUALIFIED.sub(
+        lambda m: m.group() if re.search(r"\b[VP]\d,? (?:an?|the) (?:[\w-]+ )?$", text[: m.start()]) else " ", text
+    )
     text = _INTENDED_MOVE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
