@@ -16,11 +16,12 @@ from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import agent_named, read_crash, read_crash_at
+from sovarc.compiler.frontend.crash import read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
+from sovarc.compiler.frontend.standing import introduced_parked, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -349,18 +350,6 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
-# A vehicle the impact sentence says stood still when it was hit: "the stationary V1", "while V1 remained
-# stopped". Its front may have met the other (a car reversing into it), but it had not moved off.
-_STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
-
-
-def _still_at_impact(sentence: str, pid: str) -> bool:
-    return bool(
-        re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
-        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
-    )
-
-
 def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     """The actions up to the last stop, or with a stop added."""
     stops = [i for i, a in enumerate(actions) if a.kind in (ActionKind.STOP, ActionKind.PARKED)]
@@ -441,7 +430,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         spots += [
             _clause(f"{pid}.actions[{n}]", p, at - p.at) for n, at in enumerate(ats, 1) if (p := _piece_at(early, at))
         ]
-        if isinstance(actions, tuple) and impact >= 0 and _still_at_impact(sents[impact], pid):
+        if isinstance(actions, tuple) and impact >= 0 and still_at_impact(sents[impact], pid):
             actions = _ending_stopped(actions)
         if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
             actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
@@ -451,7 +440,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
-    people = _introduced_parked(people, prepared.words, named, spots)
+    people = introduced_parked(people, prepared.words, named, spots)
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
@@ -460,7 +449,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
-    crash = _standing_struck(people, crash, sents[impact] if impact >= 0 else "")
+    crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)
@@ -496,70 +485,6 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     if crash.victim in backers and crash.striker not in backers:
         return replace(crash, striker=crash.victim, victim=crash.striker)
     return crash
-
-
-def _standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
-    """A vehicle that stood still at the impact struck nobody: the striker is the one that moved into it,
-    whichever of its parts the sentence names first (the crash readers take a named front for the striking
-    face). It stood still when the impact sentence says so ("While V1 remained stopped", "the stationary V1"),
-    or when its actions end standing (stopped for a pickup, parked) and the other's end in a move ("V1 was
-    stopped for a passenger pickup when V2 ... maneuvered to pass V1"). Not when the sentence names it the
-    agent ("it was struck by the front left of V1": it moved off again) or its front the strike's subject."""
-    striker, victim = crash.striker, crash.victim
-    if not isinstance(striker, str) or not isinstance(victim, str):
-        return crash
-    if agent_named(sentence) or _front_strikes(sentence, striker):
-        return crash
-    by_id = {p.id: p for p in people}
-    stood, moved = by_id.get(striker), by_id.get(victim)
-    if stood is None or moved is None:
-        return crash
-    if not _still_at_impact(sentence, striker):
-        standing = (ActionKind.STOP, ActionKind.PARKED)
-        if not stood.known_actions or not moved.known_actions:
-            return crash
-        if stood.known_actions[-1].kind not in standing or moved.known_actions[-1].kind in standing:
-            return crash
-    # (one that stopped earlier may move again in the impact sentence: "V2 proceeded westbound and ..."; one
-    # parked throughout stood too)
-    if _still_at_impact(sentence, victim) or [a.kind for a in moved.known_actions] == [ActionKind.PARKED]:
-        return crash
-    return replace(crash, striker=victim, victim=striker)
-
-
-def _front_strikes(sentence: str, pid: str) -> bool:
-    """Whether the sentence makes the participant's front the subject of the strike."""
-    return bool(
-        re.search(
-            rf"\bfront\b[\w' -]{{0,30}}? of (?:the )?(?:\w+ )?{pid}\b[^.;]{{0,30}}?"
-            r"\b(?:made contact|struck|hit|impacted|contacted|collided)\b",
-            sentence,
-            re.I,
-        )
-        or re.search(
-            rf"\b{pid}'s front\b[^.;]{{0,30}}?\b(?:made contact|struck|hit|impacted|contacted|collided)\b", sentence
-        )
-    )
-
-
-def _introduced_parked(
-    people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
-) -> list[Participant]:
-    """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
-    passenger vehicle"): the words that introduce a road user state what it was doing, so it stood parked.
-    `words` are the words each party numbered by rule was first named by (see `names.parties`)."""
-    out = []
-    for p in people:
-        first = re.search(rf"\b{p.id}\b", named)
-        if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
-            out.append(p)
-            continue
-        if not re.search(r"\bparked\b", words.get(p.id, ""), re.I):
-            out.append(p)
-            continue
-        spots.append((f"{p.id}.actions[1]", "named", *first.span()))
-        out.append(replace(p, actions=(Action(ActionKind.PARKED),)))
-    return out
 
 
 def _with_kinds(people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]) -> list[Participant]:
