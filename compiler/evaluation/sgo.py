@@ -16,15 +16,17 @@ The mapping (one function per field, each saying what it cannot map):
 - pre-crash movement, compared with the party's last action before the impact: Proceeding Straight is
   follow_lane or go_across; Stopped is stop; Making Left / Right / U-Turn, Changing Lanes (and Merging),
   Entering Traffic (drive_into), Crossing into Opposing Lane and Traveling Wrong Way (retrograde), Lane /
-  Road Departure (drive_off or retrograde), Passing (follow_lane or change_lane), a pedestrian Crossing
-  Roadway (cross) or Moving on Sidewalk (walk), Backing (reverse), Parked (parked, or stop: NHTSA
-  codes a vehicle standing in its lane for a passenger as parked), a Parking Maneuver
-  (reverse, drive_into or drive_off: out of a space or into one). Other / Unknown are not scored;
+  Road Departure (drive_off or retrograde), Passing (follow_lane, change_lane, or retrograde: an overtake by
+  way of the opposing lane is driving in a lane of the opposite direction), a pedestrian Crossing Roadway
+  (cross) or Moving on Sidewalk (walk), Backing (reverse), Parked (parked, or stop: NHTSA codes a vehicle
+  standing in its lane for a passenger as parked), a Parking Maneuver (reverse, drive_into or drive_off: out
+  of a space or into one). Other / Unknown are not scored;
 - crash type and striker from the contact areas: a party's front is Front, Front Left or Front Right; its
   rear Rear, Rear Left or Rear Right; its side Left or Right. The striker is the party whose front is in
   contact when the other's is not; the crash type is the other's part (rear: rear_end, side: side), and
   front to front is frontal with no striker scored. A party backing leads with its rear: its rear against
-  the other's front is rear_end, against the other's side is side, and it is the striker;
+  the other's front is rear_end, against the other's side is side, and it is the striker. A party coded
+  Stopped or Parked strikes nobody when the other moved: the mover is the striker (see `_standing_struck`);
 - the crash partner's kind, from "Crash With": Passenger Car and SUV are car, Pickup Truck pickup, Van van,
   Bus bus, Heavy Truck truck, Motorcycle motorcycle, Non-Motorist: Cyclist bicycle; the others (a
   pedestrian, a first responder's vehicle of any kind) are not scored.
@@ -130,7 +132,9 @@ _MOVEMENT: dict[str, frozenset[ActionKind] | None] = {
     "Making U-Turn": frozenset((_K.U_TURN,)),
     "Changing Lanes": frozenset((_K.CHANGE_LANE,)),
     "Merging": frozenset((_K.CHANGE_LANE,)),
-    "Passing": frozenset((_K.FOLLOW_LANE, _K.CHANGE_LANE)),
+    # an overtake is made in the next lane of its own direction or in the opposing one ("entered the opposing
+    # lane of travel to pass"): the IR says the latter as driving in a lane of the opposite direction
+    "Passing": frozenset((_K.FOLLOW_LANE, _K.CHANGE_LANE, _K.RETROGRADE)),
     "Entering Traffic": frozenset((_K.DRIVE_INTO,)),
     "Crossing into Opposing Lane": frozenset((_K.RETROGRADE,)),
     "Traveling Wrong Way": frozenset((_K.RETROGRADE,)),
@@ -219,6 +223,24 @@ def _backing(row: dict[str, str]) -> tuple[Expected, Expected]:
     return _SKIP, _SKIP
 
 
+def _standing_struck(row: dict[str, str], striker: str) -> tuple[Expected, Expected] | None:
+    """The party whose front the areas put in contact stood still (Stopped or Parked) while the other moved:
+    the IR's striker is the one that moved into the other, so it is the mover, whatever part of the standing
+    party it touched. The mover's rear against the standing front is a reversing striker's rear_end; its side
+    against that front (a passing car's side sweeping a stopped car's front corner) is no crash type of the
+    IR, whose types are a striker's leading face meeting the victim, so it is not expressible. None when the
+    rule does not apply."""
+    mover = "CP" if striker == "SV" else "SV"
+    standing = ("Stopped", "Parked")
+    if row.get(f"{striker} Pre-Crash Movement") not in standing:
+        return None
+    if row.get(f"{mover} Pre-Crash Movement") not in _MOVEMENT or row.get(f"{mover} Pre-Crash Movement") in standing:
+        return None  # the other stood too, or what it did is not coded
+    part = _part(_areas(row, mover))
+    kind = Expected(frozenset((CrashType.REAR_END,))) if part == "rear" else _INEXPRESSIBLE if part else _SKIP
+    return kind, Expected(frozenset((mover,)))
+
+
 def contact(row: dict[str, str]) -> tuple[Expected, Expected]:
     """(crash type, striker) from the contact areas; the striker as "SV" or "CP"."""
     if "Backing" in (row.get("SV Pre-Crash Movement"), row.get("CP Pre-Crash Movement")):
@@ -229,6 +251,8 @@ def contact(row: dict[str, str]) -> tuple[Expected, Expected]:
         return Expected(frozenset((CrashType.FRONTAL,))), _SKIP
     if sv_front == cp_front:
         return _SKIP, _SKIP
+    if standing := _standing_struck(row, "SV" if sv_front else "CP"):
+        return standing
     striker, other = ("SV", cp) if sv_front else ("CP", sv)
     part = _part(other)
     kind = {"rear": CrashType.REAR_END, "side": CrashType.SIDE}.get(part or "")

@@ -98,7 +98,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
-            r"|\bfrom (?:a|the) (?:private )?drive(?:way)?\b"
+            r"|\bfrom (?:a|the) (?:private )?(?:drive(?:way)?|parking (?:lot|garage|structure))\b"
+            # into the flow of traffic, or onto the road itself, from wherever it stood off it: "attempting to
+            # enter traffic", "maneuvered into the roadway" (not "into the intersection": that is crossing)
+            r"|\benter(?:ed|ing|s)? (?:the )?(?:flow of )?traffic\b"
+            r"|\b(?:maneuver|manoeuvr|pull|mov)\w* (?:out )?(?:in)?to the (?:road(?:way)?|street)\b"
             r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
             # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
             # "departing a parking space", "pulled out of the parked position"
@@ -147,7 +151,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.FOLLOW_LANE,
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            r"advanc|go\b|pass|drive|driving)\w*|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:forward|ahead)\b"
+            r"advanc|go\b|pass|drive|driving)\w*"
+            r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
+            # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
+            r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
             r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
@@ -255,7 +262,12 @@ _INTO_PLACE = re.compile(
 )
 # A state said before another party's name qualifies that party, not the one the piece is about: "V2 made
 # contact with the rear of the stationary V1", "as V2 passed the parked V1".
-_QUALIFIED = re.compile(r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$)", re.I)
+# So is one before another road user's noun: "around its stopped lead vehicle", "a stopped car ahead".
+_QUALIFIED = re.compile(
+    r"\b(?:stationary|stopped|parked|standing|slowing|stopping)(?= [VP]\d\b| ?$"
+    r"| (?:[\w-]+ )?(?:vehicles?|cars?|traffic|trucks?|bus(?:es)?|vans?|suvs?|sedans?|pickups?)\b)",
+    re.I,
+)
 _INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
 # "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
@@ -298,7 +310,10 @@ def what_was_done(text: str) -> str:
 
     text = _NEGATED.sub(" ", text)
     text = _EVASIVE.sub(" ", text)
-    text = _QUALIFIED.sub(" ", text)
+    # (not a participant's own apposition: "V2, a legally parked sedan,")
+    text = _QUALIFIED.sub(
+        lambda m: m.group() if re.search(r"\b[VP]\d,? (?:an?|the) (?:[\w-]+ )?$", text[: m.start()]) else " ", text
+    )
     text = _INTENDED_MOVE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)

@@ -20,7 +20,7 @@ _OBJECT_BEFORE = re.compile(
     # (a preposition's object: "parked perpendicular to V1", "away from V1")
     r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|to|from|toward|towards|into|onto|past|near|against|"
     r"struck|hit|impacted|contacted|striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|"
-    r"detected|detecting|pass|passed|passing|"
+    r"detected|detecting|pass|passed|passing|enter|entered|entering|enters|crossed|crossing|"
     r"followed|following|around|alongside|beside|next to|approached|approaching|overtook|overtaking)|'s) "
     r"(?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",
     re.IGNORECASE,
@@ -41,7 +41,9 @@ _OTHER = re.compile(
     r"|(?<!\bwas )(?<!\bis )(?<!\bas )\b(?:an?|another)\s+(?:[a-z][a-z-]*\s+){0,2}?(?:vehicles?|cars?|trucks?|vans?|"
     r"suvs?|sedans?|pickups?|motorists?|buses)\b(?! (?:involved|[VP]\d))"
     r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
-    r"|\b(?:vehicles|traffic)\b(?! (?:signal|light|control|device|lane|way|island|count|volume))",
+    # (not the flow a vehicle joins: "attempting to enter traffic", "merged into the flow of traffic")
+    r"|\b(?<!enter )(?<!entered )(?<!entering )(?<!enters )(?<!flow of )(?<!into )(?:vehicles|traffic)\b"
+    r"(?! (?:signal|light|control|device|lane|way|island|count|volume))",
     re.IGNORECASE,
 )
 # An object described on the spot is the subject of the description: "struck V2, a 2000 Honda that was

@@ -133,6 +133,16 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
                 r"\b(?:to|on|at) (?:the )?$", sentence[: m.start("part")], re.I
             ):
                 continue
+            # "passing V1 on the left side": the side it passed by, as with a bare side (see `_OWNED`)
+            if pattern is _OWNED[2] and re.search(
+                r"\bpass(?:ed|es|ing)?(?: by)? (?:the )?(?:\w+ )?$", sentence[: m.start()]
+            ):
+                continue
+            # "maneuvered around the left side of V1", "passed along the driver side of V1": the way it went
+            if re.search(
+                r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I
+            ):
+                continue
             if (kind := _kind(m.group("part"))) is not None:
                 parts.append((m.start(), m.group("v"), kind))
     for m in _OWN_PART.finditer(sentence):
@@ -141,11 +151,20 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
             parts.append((m.start(), subject, kind))
     for m in _OBJECT_ITS.finditer(sentence):
         # "V2 ... made contact with its front passenger side": "its" is the other one named, not the subject
-        before = _names(sentence[: m.start()])
+        # (the subject of the contact is the last one named before it as a subject: not "V1" in "V2 reversed
+        # into V1, making contact with its front bumper", whose "its" is V1's)
+        before = [
+            n.group() for n in re.finditer(r"\b" + _V + r"\b", sentence[: m.start()]) if _subject_like(sentence, n)
+        ]
         owner = next((n for n in _names(sentence) if before and n != before[-1]), None)
         if owner is not None and (kind := _kind(m.group("part"))) is not None:
             parts.append((m.start("part"), owner, kind))
     return sorted(set(parts))
+
+
+def agent_named(sentence: str) -> bool:
+    """Whether the sentence names its striker as the agent of a passive strike ("struck by the front of V1")."""
+    return bool(_AGENT.search(sentence) or _AGENT_OWNED.search(sentence))
 
 
 def _leads(who: str, kind: CrashType, backing: frozenset[str]) -> bool:
@@ -262,7 +281,7 @@ def read_sentence(
     only_front = parts and all(w == striker and k is CrashType.FRONTAL for _, w, k in parts)
     if kind is None and hit and only_front and all(at > hit.end() for at, _, _ in parts):
         kind = CrashType.SIDE
-    if kind is None and "rear-ended" in sentence.lower():
+    if kind is None and re.search(r"\brear-end(?:ed|ing|s)?\b", sentence, re.I):  # "before rear-ending V1"
         kind = CrashType.REAR_END
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)
 

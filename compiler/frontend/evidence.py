@@ -29,6 +29,7 @@ class Alignment:
     """Each character of a text the readers read, mapped to the report's characters it stands for."""
 
     def __init__(self, read: str, report: str) -> None:
+        self.read = read
         ours = [m.span() for m in _WORD.finditer(read)]
         theirs = [m.span() for m in _WORD.finditer(report)]
         self.first: list[int | None] = [None] * len(read)
@@ -60,7 +61,17 @@ class Alignment:
     def span(self, start: int, end: int) -> tuple[int, int] | None:
         firsts = [f for f in self.first[max(0, start) : end] if f is not None]
         lasts = [f for f in self.last[max(0, start) : end] if f is not None]
-        return (min(firsts), max(lasts)) if firsts else None
+        if firsts:
+            return min(firsts), max(lasts)
+        # Words the readers added: the number given to an unnumbered road user stands for the words that
+        # introduce it, which follow it up to the comma ("V2, a cyclist," for "a cyclist").
+        at = next((c for c in range(end, min(len(self.first), end + 4)) if self.first[c] is not None), None)
+        if at is None:
+            return None
+        comma = self.read.find(",", at)
+        stop = comma if 0 <= comma - at <= 40 else at + len(self.read[at:].split(" ", 1)[0])
+        lasts = [f for f in self.last[at:stop] if f is not None]
+        return self.first[at], max(lasts)
 
 
 class Locator:

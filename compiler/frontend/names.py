@@ -44,24 +44,26 @@ _AV = re.compile(
     r"\b(?![\w-])|\b(?i:our) (?:vehicle|car|truck|shuttle)\b"
 )
 # "A Zoox vehicle in autonomous mode", "an Aurora truck ... in autonomy": a brand's vehicle, when the report
-# says its vehicle drove itself.
+# says its vehicle drove itself, or was driven in manual mode (a mode only an automated vehicle has).
 _BRAND = re.compile(
     r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
 )
-_AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b", re.I)
+_AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b|\bmanual mode\b", re.I)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
 _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LABEL.pattern, re.I)
+# ("the contact area", "the point of impact area": a place on a body, the name of a form's field, not a meeting)
 _IMPACT = re.compile(
-    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|rear[- ]end\w*|"
+    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*(?! (?:areas?|points?|zones?)\b)|collid\w+|hit|"
+    r"crash\w+ into|rear[- ]end\w*|"
     r"clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
     re.I,
 )
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
 _SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
-_THING = re.compile(
+THING = re.compile(
     r"\b(?:an?|the) " + _MODS + r"(animal|dog|cat|deer|bird|pole|tree|bollard|curb|barrier|debris|tire shreds|"
     r"cone|gate|sign|fence|wall|hydrant|pothole|shopping cart|object)s?\b",
     re.I,
@@ -133,6 +135,8 @@ def _automated(text: str) -> tuple[str, str] | None:
             "V1",
             text,
         )
+        # and the brand alone, once said with it: "the Mercedes-Benz vehicle ... the Mercedes-Benz"
+        text = re.sub(r"\b[Tt]he " + re.escape(brand.group(1)) + r"\b(?![\w-])(?! [A-Za-z])", "V1", text)
     text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
     return text, said
 
@@ -145,7 +149,9 @@ _SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Foll
 # A road user introduced by its make, as what a strike met or was made by: "by a red Toyota", "struck a Honda
 # Civic" (capitalised and not an acronym, which would be a system's name: "an ADS").
 _MAKE = re.compile(
-    r"\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into)\s+(?P<words>(?:an?|another)\s+"
+    # (or as the subject of a clause: "At this time, a Chevrolet Camaro ... reversed")
+    r"(?:\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into|when|as|while)\s+|^|[,;]\s+)"
+    r"(?P<words>(?:[Aa]n?|[Aa]nother)\s+"
     r"(?:[a-z][\w-]*\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
 )
 
@@ -166,6 +172,10 @@ def _others(text: str) -> list[tuple[str, str]]:
             sentence = sentence[scene.end() :]
         users: list[tuple[str, str]] = []
         for m in _USER.finditer(sentence):
+            if re.fullmatch(r"the vehicle", m.group(), re.I) and re.match(r"\s*(?:[.,;)]|$)", sentence[m.end() :]):
+                # a bare "the vehicle" points back to a party already named (the automated vehicle, often);
+                # one a phrase picks out ("the vehicle immediately behind", "the vehicle that struck") is new
+                continue
             if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
                 users.append((_head(m), m.group()))
         if users:
@@ -240,7 +250,7 @@ def partner_refusal(named: str, note: str | None) -> str | None:
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
     for sentence in sentences(named):
-        if _IMPACT.search(sentence) and (m := _THING.search(sentence)):
+        if _IMPACT.search(sentence) and (m := THING.search(sentence)):
             return (
                 f"the crash partner ('{m.group()}') is not a road user; the scenario IR holds vehicles and "
                 "pedestrians only"

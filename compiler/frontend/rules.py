@@ -21,6 +21,7 @@ from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
+from sovarc.compiler.frontend.standing import introduced_parked, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -349,18 +350,6 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
-# A vehicle the impact sentence says stood still when it was hit: "the stationary V1", "while V1 remained
-# stopped". Its front may have met the other (a car reversing into it), but it had not moved off.
-_STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
-
-
-def _still_at_impact(sentence: str, pid: str) -> bool:
-    return bool(
-        re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
-        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
-    )
-
-
 def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     """The actions up to the last stop, or with a stop added."""
     stops = [i for i, a in enumerate(actions) if a.kind in (ActionKind.STOP, ActionKind.PARKED)]
@@ -441,7 +430,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         spots += [
             _clause(f"{pid}.actions[{n}]", p, at - p.at) for n, at in enumerate(ats, 1) if (p := _piece_at(early, at))
         ]
-        if isinstance(actions, tuple) and impact >= 0 and _still_at_impact(sents[impact], pid):
+        if isinstance(actions, tuple) and impact >= 0 and still_at_impact(sents[impact], pid):
             actions = _ending_stopped(actions)
         if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
             actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
@@ -451,6 +440,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
+    people = introduced_parked(people, prepared.words, named, spots)
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
@@ -459,6 +449,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
+    crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)

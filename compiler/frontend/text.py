@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
-from sovarc.compiler.frontend.names import parties
+from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.sentences import sentences
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
@@ -23,7 +23,8 @@ _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
-    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|hit|crash\w+ into|collision|rear[- ]ended"
+    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*(?! (?:areas?|points?|zones?)\b)|collid\w+|hit"
+    r"|crash\w+ into|collision|rear[- ]ended"
     r"|" + MOVED_INTO + r")\b",
     re.IGNORECASE,
 )
@@ -189,9 +190,17 @@ def impact_clause(sentence: str) -> str:
 _MET = re.compile(r"\b(?:struck|strikes|hit|rear-ended|collided with|ma(?:de|king) contact)\b", re.I)
 
 
+def _thing_only(sentence: str) -> bool:
+    """An impact of one party with a thing the IR has no role for ("the front of V1 made contact with the cat")."""
+    clause = impact_clause(sentence)
+    return len(set(re.findall(r"\b[VP]\d\b", clause))) < 2 and THING.search(clause) is not None
+
+
 def first_impact(sents: list[str]) -> int:
-    """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1."""
+    """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1. An impact with an
+    animal or an object before the parties met is not theirs: the crash is the first between road users."""
     found = [i for i, s in enumerate(sents) if describes_impact(s)]
+    found = [i for i in found if not _thing_only(sents[i])] or found
     described = [i for i in found if not _SUMMARY.search(sents[i]) or _MET.search(sents[i])]
     return (described or found or [-1])[0]
 

@@ -49,6 +49,9 @@ def test_movements_map_to_actions_backing_and_parked_included() -> None:
     assert sgo.movement(row(**{"CP Pre-Crash Movement": "Backing"}), "CP").accept == {ActionKind.REVERSE}
     assert ActionKind.PARKED in sgo.movement(row(**{"SV Pre-Crash Movement": "Parked"}), "SV").accept
     assert sgo.movement(row(**{"SV Pre-Crash Movement": "Other, see Narrative"}), "SV").skip == sgo.NOT_SCORED
+    # an overtake through the opposing lane is driving in a lane of the opposite direction in the IR
+    passing = sgo.movement(row(**{"CP Pre-Crash Movement": "Passing"}), "CP").accept
+    assert passing == {ActionKind.FOLLOW_LANE, ActionKind.CHANGE_LANE, ActionKind.RETROGRADE}
 
 
 def test_the_partner_kind_comes_from_crash_with() -> None:
@@ -89,6 +92,29 @@ def test_a_backing_party_leads_with_its_rear_and_is_the_striker(
     crash_type, who = sgo.contact(contact(sv, cp, **{"CP Pre-Crash Movement": "Backing"}))
     assert crash_type.accept == ({kind} if kind else set())
     assert who.accept == ({"CP"} if kind else set())
+
+
+@pytest.mark.parametrize(
+    ("sv_move", "cp_move", "cp", "kind", "striker"),
+    [
+        # a car parallel parking backs into the stopped automated vehicle's front: the mover strikes, rear first
+        ("Stopped", "Parking Maneuver", ("Rear Left",), {CrashType.REAR_END}, {"CP"}),
+        # a passing car's side sweeps a parked one's front corner: the mover strikes, with no IR crash type
+        ("Parked", "Proceeding Straight", ("Right",), set(), {"CP"}),
+        # both moving: the front in contact is the striker's, as before
+        ("Proceeding Straight", "Changing Lanes", ("Right",), {CrashType.SIDE}, {"SV"}),
+        # both standing: nobody moved into the other as far as the codes say, so the areas decide, as before
+        ("Stopped", "Parked", ("Rear",), {CrashType.REAR_END}, {"SV"}),
+    ],
+)
+def test_a_party_standing_still_strikes_nobody(
+    sv_move: str, cp_move: str, cp: tuple[str, ...], kind: set[CrashType], striker: set[str]
+) -> None:
+    r = contact(("Front Right",), cp, **{"SV Pre-Crash Movement": sv_move, "CP Pre-Crash Movement": cp_move})
+    crash_type, who = sgo.contact(r)
+    assert crash_type.accept == kind
+    assert crash_type.skip == (None if kind else sgo.NOT_EXPRESSIBLE)
+    assert who.accept == striker
 
 
 NARRATIVE = (

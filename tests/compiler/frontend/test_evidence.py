@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
-from sovarc.compiler.frontend.evidence import EvidenceError, Locator, stated
+from sovarc.compiler.frontend.evidence import Alignment, EvidenceError, Locator, stated
 from sovarc.compiler.frontend.hybrid import attach_evidence, shown_span
 from sovarc.compiler.frontend.rules import _WEATHER
 from sovarc.compiler.frontend.text import prepare, sentences
@@ -143,3 +143,13 @@ def test_explain_refuses_a_changed_report(tmp_path: Path) -> None:
     assert "is not the report this scenario was read from" in refused.stderr
     shown = sovarc("explain", "--help")
     assert "assumed" in shown.stdout and "not stated" in shown.stdout and "examples:" in shown.stdout
+
+
+def test_a_number_the_readers_gave_stands_for_the_words_that_introduce_it() -> None:
+    """ "V2, a cyclist," is read where the report says "a cyclist": evidence at the added "V2" is those words,
+    not an internal error."""
+    report = "The AV was in a collision involving a cyclist on Elm Street. The cyclist rode on."
+    read = "V1 was in a collision involving V2, a cyclist, on Elm Street. V2 rode on."
+    at = read.index("V2")
+    found = Alignment(read, report).span(at, at + 2)
+    assert found is not None and report[found[0] : found[1]] == "a cyclist"

@@ -235,3 +235,99 @@ def test_a_center_lane_is_no_line_between_the_directions() -> None:
         "the center lane, made contact with the rear of the Waymo AV."
     )
     assert ActionKind.RETROGRADE not in kinds(s, "V2")
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        "While the Waymo AV remained stopped, the sedan pulled forward and the rear of its trailer made contact "
+        "with the front bumper of the Waymo AV",
+        "The sedan swung wide and its passenger side made contact with the front corner of the stationary Waymo AV",
+    ],
+)
+def test_a_party_standing_still_is_struck_whatever_part_is_named_first(impact: str) -> None:
+    """The crash readers take a named front for the striking face; a vehicle said to stand still at the impact
+    struck nobody, so the one that moved is the striker."""
+    s = read(OPENING + f"The Waymo AV was traveling west on [XXX] and came to a stop behind the sedan. {impact}.")
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+def test_a_moving_party_named_by_its_front_still_strikes() -> None:
+    s = read(
+        OPENING + "The Waymo AV was traveling west on [XXX] when the front of the Waymo AV made contact with the "
+        "rear of the stationary sedan."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V1", "V2")
+
+
+def test_a_side_gone_around_is_the_way_not_the_part_met() -> None:
+    """ "around the left side of V1" says where the other went; the part met is the one the contact names."""
+    s = read(
+        OPENING + "While the Waymo AV remained stopped, the sedan maneuvered around the left side of the Waymo AV "
+        "and the front passenger side of the sedan made contact with the rear driver side of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.type) == ("V2", CrashType.REAR_END)
+
+
+def test_its_part_after_a_move_into_the_other_is_the_others() -> None:
+    """In "the sedan reversed into the Waymo AV, making contact with its front bumper", the contact's subject is
+    the sedan (the Waymo AV is the object of "into"), so "its" is the Waymo AV's: a reversing rear into a front."""
+    s = read(
+        OPENING + "The Waymo AV came to a stop behind the sedan. The sedan reversed into the Waymo AV, making "
+        "contact with its front bumper."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+def test_the_side_a_party_passed_on_is_no_part_met() -> None:
+    s = read(
+        OPENING + "The Waymo AV began a left lane change, and the front passenger side of the sedan, which was "
+        "passing the Waymo AV on the left side, made contact with the front driver side of the Waymo AV."
+    )
+    assert s.crash.type is CrashType.FRONTAL
+
+
+def test_an_animal_struck_first_is_not_the_crash() -> None:
+    """The crash is the first impact between road users; what the sedan did before it counts."""
+    s = read(
+        OPENING + "The Waymo AV was traveling north on [XXX] when a dog ran into the road and the front of the Waymo "
+        "AV made contact with the dog. The Waymo AV came to a stop. The sedan traveling directly behind the "
+        "Waymo AV then made contact with the rear of the stationary Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type) == ("V2", "V1", CrashType.REAR_END)
+    assert kinds(s, "V2") == [ActionKind.FOLLOW_LANE]
+
+
+def test_a_party_whose_actions_end_standing_is_struck() -> None:
+    """Stopped for a pickup in an earlier clause, the Waymo AV stood at the impact; the sedan passing it moved
+    into it, though the only part named is the Waymo AV's front corner."""
+    s = read(
+        OPENING + "The Waymo AV was stopped on [XXX] for a passenger pickup when the sedan behind it maneuvered to "
+        "pass the Waymo AV on the left. As it did so, the passenger side of the sedan made contact with the front "
+        "driver side corner of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        # the sentence names it the agent: it moved off again
+        "The Waymo AV was stopped at the light when the sedan pulled out and was struck by the front of the Waymo AV",
+        # the sentence makes its front the subject of the strike
+        "The Waymo AV was stopped at the light when the sedan pulled out. The front of the Waymo AV made contact "
+        "with the side of the sedan",
+    ],
+)
+def test_a_party_said_to_strike_with_its_front_keeps_striking(impact: str) -> None:
+    s = read(OPENING + impact + ".")
+    assert s.crash.striker == "V1"
+
+
+def test_another_road_users_state_is_not_the_subjects() -> None:
+    """ "around its stopped lead vehicle": the stop is the lead vehicle's, the lane change the subject's."""
+    s = read(
+        OPENING + "The Waymo AV began a right lane change to proceed around its stopped lead vehicle and made "
+        "contact with the sedan traveling in the right adjacent lane."
+    )
+    assert kinds(s, "V1")[-1] is ActionKind.CHANGE_LANE

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd
-from sovarc.dsl.ir import ActionKind, CrashType, Lighting, Scenario, Unknown
+from sovarc.dsl.ir import Action, ActionKind, CrashType, Lighting, Scenario, Unknown
 from sovarc.dsl.span import Source
 
 SUMMARY = (
@@ -124,3 +124,55 @@ def test_moving_off_after_a_stop_and_going_around() -> None:
         "and the passenger side of the SUV made contact with the rear driver side of the stationary Waymo AV."
     )
     assert last(s, "V2") is ActionKind.CHANGE_LANE
+
+
+@pytest.mark.parametrize(
+    "came",
+    [
+        "a sedan, attempting to enter traffic from a gas station on the right, entered the Waymo AV's path",
+        "a sedan pulling out from a parking garage on the right moved into the path of the Waymo AV",
+        "a sedan stopped at the curb ahead maneuvered into the roadway",
+    ],
+)
+def test_a_partner_entering_the_road_from_off_it(came: str) -> None:
+    """Joining the flow of traffic, or moving onto the road itself, from where it stood off it is `drive_into`;
+    "traffic" it joins is no other road user, and a party whose path it entered is its object."""
+    s = read(f"The Waymo AV was traveling north on [XXX] when {came}, and the sedan made contact with the Waymo AV.")
+    assert last(s, "V2") is ActionKind.DRIVE_INTO
+
+
+def test_rear_ending_says_the_crash_type_in_any_form() -> None:
+    s = read(
+        "The Waymo AV was traveling south on [XXX]. A police report later gave the sedan's failure to keep its "
+        "distance before rear-ending the Waymo AV as the cause."
+    )
+    assert s.crash.type is CrashType.REAR_END
+
+
+def test_a_partner_introduced_as_parked_stood_parked() -> None:
+    """Nothing is said of the sedan before the impact but the words that introduce it: "a parked sedan"."""
+    s = read(
+        "An Acme AV operating in autonomous mode was in a collision involving an empty parked sedan. While backing "
+        "out of a driveway, the Acme AV made contact with the rear door of an empty parked sedan."
+    )
+    p = next(p for p in s.participants if p.id == "V2")
+    assert p.actions == (Action(ActionKind.PARKED),)
+    assert s.provenance is not None
+    assert any(e.fact == "V2.actions[1]" and "parked" in e.quote for e in s.provenance.evidence)
+
+
+def test_a_partner_introduced_without_a_state_stays_unknown() -> None:
+    s = read(
+        "An Acme AV operating in autonomous mode was in a collision involving a sedan. While backing out of a "
+        "driveway, the Acme AV made contact with the rear door of a sedan."
+    )
+    assert isinstance(next(p for p in s.participants if p.id == "V2").actions, Unknown)
+
+
+@pytest.mark.parametrize("moved", ["then pulled slightly forward", "then proceeded westbound"])
+def test_moving_off_again_said_with_how_or_where(moved: str) -> None:
+    s = read(
+        "The Waymo AV was stopped on [XXX] for a passenger pickup. A sedan stopped beside the Waymo AV. The sedan "
+        f"{moved} and its passenger side made contact with the driver side of the stationary Waymo AV."
+    )
+    assert last(s, "V2") is ActionKind.FOLLOW_LANE

@@ -1,0 +1,94 @@
+"""Who stood still at the impact, and what the words that introduce a road user say it was doing.
+
+A vehicle that stood still struck nobody: the crash readers take a named front for the striking face, so
+"the passenger side of V2 made contact with the front corner of the stationary V1" reads V1 striking; the one
+that moved into it is the striker. And a road user renamed V2 loses the words that introduced it ("an unoccupied
+parked passenger vehicle"), which may be all the report says of what it was doing.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from sovarc.compiler.frontend.crash import agent_named
+from sovarc.dsl.ir import Action, ActionKind, Crash, Participant, Role, Unknown
+
+# A span a reader read a fact from, as in `rules.Spot`.
+Spot = tuple[str, str, int, int]
+
+
+# A vehicle the impact sentence says stood still when it was hit: "the stationary V1", "while V1 remained
+# stopped". Its front may have met the other (a car reversing into it), but it had not moved off.
+_STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
+
+
+def still_at_impact(sentence: str, pid: str) -> bool:
+    return bool(
+        re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
+        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
+    )
+
+
+def standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
+    """A vehicle that stood still at the impact struck nobody: the striker is the one that moved into it,
+    whichever of its parts the sentence names first (the crash readers take a named front for the striking
+    face). It stood still when the impact sentence says so ("While V1 remained stopped", "the stationary V1"),
+    or when its actions end standing (stopped for a pickup, parked) and the other's end in a move ("V1 was
+    stopped for a passenger pickup when V2 ... maneuvered to pass V1"). Not when the sentence names it the
+    agent ("it was struck by the front left of V1": it moved off again) or its front the strike's subject."""
+    striker, victim = crash.striker, crash.victim
+    if not isinstance(striker, str) or not isinstance(victim, str):
+        return crash
+    if agent_named(sentence) or _front_strikes(sentence, striker):
+        return crash
+    by_id = {p.id: p for p in people}
+    stood, moved = by_id.get(striker), by_id.get(victim)
+    if stood is None or moved is None:
+        return crash
+    if not still_at_impact(sentence, striker):
+        standing = (ActionKind.STOP, ActionKind.PARKED)
+        if not stood.known_actions or not moved.known_actions:
+            return crash
+        if stood.known_actions[-1].kind not in standing or moved.known_actions[-1].kind in standing:
+            return crash
+    # (one that stopped earlier may move again in the impact sentence: "V2 proceeded westbound and ..."; one
+    # parked throughout stood too)
+    if still_at_impact(sentence, victim) or [a.kind for a in moved.known_actions] == [ActionKind.PARKED]:
+        return crash
+    return replace(crash, striker=victim, victim=striker)
+
+
+def _front_strikes(sentence: str, pid: str) -> bool:
+    """Whether the sentence makes the participant's front the subject of the strike."""
+    return bool(
+        re.search(
+            rf"\bfront\b[\w' -]{{0,30}}? of (?:the )?(?:\w+ )?{pid}\b[^.;]{{0,30}}?"
+            r"\b(?:made contact|struck|hit|impacted|contacted|collided)\b",
+            sentence,
+            re.I,
+        )
+        or re.search(
+            rf"\b{pid}'s front\b[^.;]{{0,30}}?\b(?:made contact|struck|hit|impacted|contacted|collided)\b", sentence
+        )
+    )
+
+
+def introduced_parked(
+    people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
+) -> list[Participant]:
+    """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
+    passenger vehicle"): the words that introduce a road user state what it was doing, so it stood parked.
+    `words` are the words each party numbered by rule was first named by (see `names.parties`)."""
+    out = []
+    for p in people:
+        first = re.search(rf"\b{p.id}\b", named)
+        if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
+            out.append(p)
+            continue
+        if not re.search(r"\bparked\b", words.get(p.id, ""), re.I):
+            out.append(p)
+            continue
+        spots.append((f"{p.id}.actions[1]", "named", *first.span()))
+        out.append(replace(p, actions=(Action(ActionKind.PARKED),)))
+    return out
