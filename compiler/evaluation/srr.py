@@ -59,7 +59,7 @@ def reconstruct(
         reason = getattr(exc, "diagnostics", None)
         rows += [_row(path, kind, "-", "planning failed", str(reason[0].message if reason else exc))]
         rows += [_row(path, kind, "-", "planning failed", "no site")] * (roads - 1)
-        return rows
+        return _lacking(scenario, road_map, rows, roads)
     for r in results:
         if r.plan is None:
             rows.append(_row(path, kind, r.site, "planning failed", first_message(r.error)))
@@ -92,8 +92,8 @@ def _lacking(scenario: Scenario, road_map: RoadMap, rows: list[Row], roads: int)
     failed = sorted((r for r in rows if not r["passed"]), key=lambda r: r["site"] in shaped)
     kinds = KIND_NAMES[kind][1] if kind is not None else "sites"
     asked = "; ".join(n.describe() for n in needs) or "no participants"
-    lack = f"the map has no site of the shape this scenario needs: {len(shaped)} of its {len(sites)} {kinds}"
-    lack += f" fit {asked}"
+    lack = "the map has no site of the shape this scenario needs: "
+    lack += f"{len(shaped)} of its {len(sites)} {kinds} fit {asked}" if sites else f"it has no {kinds} ({asked})"
     for row in failed[:short]:
         reason = row["reason"]
         said = reason if reason not in ("no site", "fewer fitting sites than asked") else ""
