@@ -19,6 +19,7 @@ from typing import Any
 
 import sovarc.targets.registry as registry
 from sovarc.compiler.batch.tasks import worker_map
+from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.maps import RoadMap, find_sites, has_shape, scenario_needs
 from sovarc.compiler.maps.search import KIND_NAMES
 from sovarc.compiler.pipeline import Options, stage_sites
@@ -58,7 +59,7 @@ def reconstruct(
     except Exception as exc:  # no fitting site: every requested site failed to plan
         reason = getattr(exc, "diagnostics", None)
         rows += [_row(path, kind, "-", "planning failed", str(reason[0].message if reason else exc))]
-        rows += [_row(path, kind, "-", "planning failed", "no site")] * (roads - 1)
+        rows += [_row(path, kind, "-", "planning failed", "no site") for _ in range(roads - 1)]
         return _lacking(scenario, road_map, rows, roads)
     for r in results:
         if r.plan is None:
@@ -72,7 +73,7 @@ def reconstruct(
                 rows.append(_row(path, kind, r.site, "replay error", str(error)))
         rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
     missing = roads - len(results)
-    rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
+    rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked") for _ in range(missing)]
     return _lacking(scenario, road_map, rows, roads)
 
 
@@ -82,6 +83,10 @@ def _lacking(scenario: Scenario, road_map: RoadMap, rows: list[Row], roads: int)
     first, are of class NO_SHAPE, their reason beginning with what the map lacks."""
     if all(row["passed"] for row in rows):
         return rows
+    try:
+        scenario, _ = assume(scenario)  # the needs of the scenario as the site search saw it
+    except SovarcError:
+        return rows  # facts no road can reconcile: the record's failure, not the map's
     kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
     needs = scenario_needs(scenario)
     sites = find_sites(road_map, kind)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from sovarc.compiler.evaluation.srr import NO_SHAPE, _lacking, _row, srr_table
+from sovarc.compiler.evaluation.srr import NO_SHAPE, _lacking, _row, reconstruct, srr_table
 from sovarc.compiler.maps import find_sites
 
 from tests.compiler.maps.conftest import scenario
@@ -42,3 +42,13 @@ def test_a_map_with_enough_sites_of_the_shape_keeps_its_failures(tmp_path: Path)
     rows = [_failed(f"road:{k}", "cannot strike") for k in range(3)]
     out = _lacking(scenario("straight_double_yellow_pass_frontal"), road_map, [dict(r) for r in rows], roads=3)
     assert [r["failure"] for r in out] == ["planning failed"] * 3
+
+
+def test_a_scenario_no_site_fits_at_all_has_every_row_said_so(tmp_path: Path) -> None:
+    # two one-way carriageways: a pass over the centre line has no road here, on any of 3 sites
+    nodes = {"a": (0, 0), "b": (200, 0), "c": (200, 20), "d": (0, 20)}
+    road_map = build(tmp_path, nodes, ["east a b 2 oneway", "west c d 2 oneway"])
+    name = "straight_double_yellow_pass_frontal"
+    rows = reconstruct(scenario(name), Path(f"{name}.sov"), road_map, roads=3)
+    assert [r["failure"] for r in rows] == [NO_SHAPE] * 3
+    assert all(r["reason"].startswith("the map has no site of the shape this scenario needs: 0 of its 2") for r in rows)
