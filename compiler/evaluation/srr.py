@@ -94,14 +94,17 @@ def _lacking(scenario: Scenario, road_map: RoadMap, rows: list[Row], roads: int)
     short = roads - len(shaped)
     if short <= 0:
         return rows
-    failed = sorted((r for r in rows if not r["passed"]), key=lambda r: r["site"] in shaped)
+    # rows on no site, then on sites of another shape; a reason of its own (a record that contradicts
+    # itself) is kept for the row left a planning failure
+    bare = ("no site", "fewer fitting sites than asked")
+    failed = sorted((r for r in rows if not r["passed"]), key=lambda r: (r["site"] in shaped, r["reason"] not in bare))
     kinds = KIND_NAMES[kind][1] if kind is not None else "sites"
     asked = "; ".join(n.describe() for n in needs) or "no participants"
     lack = "the map has no site of the shape this scenario needs: "
     lack += f"{len(shaped)} of its {len(sites)} {kinds} fit {asked}" if sites else f"it has no {kinds} ({asked})"
     for row in failed[:short]:
         reason = row["reason"]
-        said = reason if reason not in ("no site", "fewer fitting sites than asked") else ""
+        said = reason if reason not in bare else ""
         row.update(failure=NO_SHAPE, reason=lack + (f" ({said})" if said else ""))
     return rows
 
