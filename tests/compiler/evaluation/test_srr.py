@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from sovarc.compiler.evaluation.srr import NO_SHAPE, _lacking, _row, reconstruct, srr_table
 from sovarc.compiler.maps import find_sites
+from sovarc.compiler.pipeline import Assumed, Sites, Slots, _fewer
+from sovarc.compiler.slots import SiteResult
 
 from tests.compiler.maps.conftest import scenario
 from tests.compiler.maps.test_roads import build
@@ -52,3 +55,15 @@ def test_a_scenario_no_site_fits_at_all_has_every_row_said_so(tmp_path: Path) ->
     rows = reconstruct(scenario(name), Path(f"{name}.sov"), road_map, roads=3)
     assert [r["failure"] for r in rows] == [NO_SHAPE] * 3
     assert all(r["reason"].startswith("the map has no site of the shape this scenario needs: 0 of its 2") for r in rows)
+
+
+def test_the_pipeline_says_when_the_map_has_fewer_sites_of_the_shape_than_asked(tmp_path: Path) -> None:
+    nodes = {"a": (0, 0), "b": (200, 0), "c": (0, 100), "d": (200, 100), "e": (200, 120), "f": (0, 120)}
+    road_map = build(tmp_path, nodes, ["two a b 1", "east c d 2 oneway", "west e f 2 oneway"])
+    sites = Sites(Assumed(scenario("straight_double_yellow_pass_frontal"), ()), road_map, (), 3)
+    note = _fewer(Slots(sites, [SiteResult("road:two")], ()))
+    assert note == (
+        f"note: {road_map.name} has 1 site this scenario fits, 3 asked: "
+        "it has no other site of the shape the scenario needs\n"
+    )
+    assert _fewer(Slots(replace(sites, roads=1), [SiteResult("road:two")], ())) == ""
