@@ -20,7 +20,10 @@ from sovarc.dsl.ir import CrashType
 # Degrees between the headings at first touch that each crash type allows, for every oracle.
 # Frontal is front into front with the two approaching each other: head-on, or a car turning
 # across an oncoming one (crash databases, and the ground truth, code that front-to-front). A
-# front corner touching a crossing car at right angles is not frontal: that is a side crash.
+# front corner touching a crossing car's side at right angles is not frontal: that is a side crash.
+# Two cars crossing at right angles meet front to front only at a corner: one's front corner just
+# inside the other's way, its front face struck square by the other's front (`fits`); crossing at
+# 90 degrees, that is the only frontal crash two cars going straight over can have.
 CRASH_ANGLES: dict[str, tuple[float, float]] = {
     "rear_end": (0.0, 45.0),
     "frontal": (100.0, 180.0),
@@ -128,8 +131,17 @@ def fits(kind: CrashType, contact: Contact, backing: bool = False) -> bool:
     if kind is CrashType.REAR_END:
         return ok and contact.angle <= REAR_END_MAX_ANGLE
     if kind is CrashType.FRONTAL:
-        return ok and contact.angle >= FRONTAL_MIN_ANGLE
+        return ok and (contact.angle >= FRONTAL_MIN_ANGLE or corner_frontal(contact, backing))
     return ok
+
+
+def corner_frontal(contact: Contact, backing: bool = False) -> bool:
+    """A frontal crash across a crossing: the victim's front face (its rear, backing) entered square
+    by the striker's leading corner, the two heading apart by more than a rear-end allows."""
+    return (
+        contact.angle > REAR_END_MAX_ANGLE
+        and contact.pressed[1] in (BACKING_FACES if backing else VICTIM_FACES)[CrashType.FRONTAL]
+    )
 
 
 def face_words(zone: tuple[str, ...]) -> str:
@@ -152,5 +164,5 @@ def needs(kind: CrashType, striker: str, victim: str, backing: bool = False) -> 
     if kind is CrashType.REAR_END:
         return text + f", headings within {REAR_END_MAX_ANGLE:.0f} degrees"
     if kind is CrashType.FRONTAL:
-        return text + f", headings at least {FRONTAL_MIN_ANGLE:.0f} degrees apart"
+        return text + f", headings at least {FRONTAL_MIN_ANGLE:.0f} degrees apart (or its front face entered square)"
     return text

@@ -198,7 +198,19 @@ def _emit_unfilled(result: SiteResult, options: Options) -> None:
 
 def _render_sites_table(slots: Slots) -> str:
     """One row per slot: its site and impact time (the table `sovarc lower` prints)."""
-    return summary(slots.results, ())
+    return summary(slots.results, ()) + _fewer(slots)
+
+
+def _fewer(slots: Slots) -> str:
+    """Said when the map has fewer sites the scenario fits than were asked for: no site of its shape."""
+    found, asked = len(slots.results), slots.sites.roads
+    if found >= asked:
+        return ""
+    name = slots.sites.road_map.name
+    return (
+        f"note: {name} has {found} site{'s' if found != 1 else ''} this scenario fits, {asked} asked: "
+        "it has no other site of the shape the scenario needs\n"
+    )
 
 
 def _check(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
@@ -211,7 +223,7 @@ def _check(result: SiteResult, options: Options, log: RunLog) -> SiteResult:
 
 def _render_summary(slots: Slots) -> str:
     """One row per slot: its site, impact time and each target's verdict."""
-    return summary(slots.results, slots.targets)
+    return summary(slots.results, slots.targets) + _fewer(slots)
 
 
 PIPELINE: tuple[Stage, ...] = (

@@ -373,7 +373,9 @@ def _add_srr_parser(which: Any, formatter: Any) -> None:
         help="scenario reconstruction rate in SUMO, per road kind",
         description="Stage every scenario on --roads sites of each map, replay it in SUMO and print the\n"
         "reconstruction rate per road kind (the paper's Table 4) and the failures by class\n"
-        "(Table 5: planning failed, crash type mismatch, line crossing).\n\n"
+        "(Table 5: planning failed, crash type mismatch, line crossing; and no site of its shape,\n"
+        "where fewer of the map's sites have the lanes and arms a scenario needs than --roads),\n"
+        "the rate also over the scenario-sites the map has a site of the needed shape for.\n\n"
         "example:\n"
         "  sovarc import-truth ../shared/data/nmvccs/truth -o truth\n"
         "  sovarc eval srr truth --roads 3 -m examples/maps/town.net.xml --json srr.json",

@@ -3,7 +3,10 @@
 Each scenario is staged on --roads sites of a map (the pipeline's assume, sites and stage), and each
 plan replayed by the SUMO target's oracle; a scenario-site counts as reconstructed when the oracle
 passes it. A failure is sorted into the paper's classes: planning failed, crash type mismatch, line
-crossing (and replay error, when SUMO refused the scenario).
+crossing (and replay error, when SUMO refused the scenario). A scenario-site the map has no site
+for is not a planning failure: where fewer of the map's sites have the shape the scenario needs
+(its kind, the lanes each participant needs, an arm where each move leads) than were asked, that
+many of its failed rows are "no site of its shape", and the SRR is also given over the rest.
 """
 
 from __future__ import annotations
@@ -16,16 +19,19 @@ from typing import Any
 
 import sovarc.targets.registry as registry
 from sovarc.compiler.batch.tasks import worker_map
-from sovarc.compiler.maps import RoadMap
+from sovarc.compiler.lower.assume import assume
+from sovarc.compiler.maps import RoadMap, find_sites, has_shape, scenario_needs
+from sovarc.compiler.maps.search import KIND_NAMES
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
 from sovarc.compiler.scenario_io import load_scenario
 from sovarc.compiler.slots import first_message
 from sovarc.dsl.errors import SovarcError
-from sovarc.dsl.ir import Scenario
+from sovarc.dsl.ir import RoadKind, Scenario
 from sovarc.targets.verdict import Verdict
 
-FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error")
+NO_SHAPE = "no site of its shape"
+FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "replay error", NO_SHAPE)
 
 Row = dict[str, Any]
 
@@ -53,8 +59,8 @@ def reconstruct(
     except Exception as exc:  # no fitting site: every requested site failed to plan
         reason = getattr(exc, "diagnostics", None)
         rows += [_row(path, kind, "-", "planning failed", str(reason[0].message if reason else exc))]
-        rows += [_row(path, kind, "-", "planning failed", "no site")] * (roads - 1)
-        return rows
+        rows += [_row(path, kind, "-", "planning failed", "no site") for _ in range(roads - 1)]
+        return _lacking(scenario, road_map, rows, roads)
     for r in results:
         if r.plan is None:
             rows.append(_row(path, kind, r.site, "planning failed", first_message(r.error)))
@@ -67,7 +73,39 @@ def reconstruct(
                 rows.append(_row(path, kind, r.site, "replay error", str(error)))
         rows[-1]["skipped"] = [{"site": s.site, "reason": first_message(s.error)} for s in r.skipped]
     missing = roads - len(results)
-    rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked")] * missing
+    rows += [_row(path, kind, "-", "planning failed", "fewer fitting sites than asked") for _ in range(missing)]
+    return _lacking(scenario, road_map, rows, roads)
+
+
+def _lacking(scenario: Scenario, road_map: RoadMap, rows: list[Row], roads: int) -> list[Row]:
+    """Rows the map has no site for, said so: where only n < `roads` of its sites have the shape
+    the scenario needs (`maps.has_shape`), up to roads - n failed rows, those not on such a site
+    first, are of class NO_SHAPE, their reason beginning with what the map lacks."""
+    if all(row["passed"] for row in rows):
+        return rows
+    try:
+        scenario, _ = assume(scenario)  # the needs of the scenario as the site search saw it
+    except SovarcError:
+        return rows  # facts no road can reconcile: the record's failure, not the map's
+    kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
+    needs = scenario_needs(scenario)
+    sites = find_sites(road_map, kind)
+    shaped = {site.id for site in sites if has_shape(site, needs)}
+    short = roads - len(shaped)
+    if short <= 0:
+        return rows
+    # rows on no site, then on sites of another shape; a reason of its own (a record that contradicts
+    # itself) is kept for the row left a planning failure
+    bare = ("no site", "fewer fitting sites than asked")
+    failed = sorted((r for r in rows if not r["passed"]), key=lambda r: (r["site"] in shaped, r["reason"] not in bare))
+    kinds = KIND_NAMES[kind][1] if kind is not None else "sites"
+    asked = "; ".join(n.describe() for n in needs) or "no participants"
+    lack = "the map has no site of the shape this scenario needs: "
+    lack += f"{len(shaped)} of its {len(sites)} {kinds} fit {asked}" if sites else f"it has no {kinds} ({asked})"
+    for row in failed[:short]:
+        reason = row["reason"]
+        said = reason if reason not in bare else ""
+        row.update(failure=NO_SHAPE, reason=lack + (f" ({said})" if said else ""))
     return rows
 
 
@@ -112,11 +150,16 @@ def _row(path: Path, kind: str, site: str, failure: str | None, reason: str) -> 
 
 def srr_table(name: str, rows: list[Row]) -> str:
     kinds = sorted({str(r["kind"]) for r in rows})
-    lines = [f"SRR on {name} (scenario-sites reconstructed / attempted)", f"  {'road kind':<14}{'SRR':>8}  n"]
+    lines = [
+        f"SRR on {name} (scenario-sites reconstructed / attempted; then / those the map has a site of the shape for)",
+        f"  {'road kind':<14}{'SRR':>8}  {'n':<9}{'SRR':>8}  n",
+    ]
     for kind in [*kinds, "all"]:
         chosen = [r for r in rows if kind in ("all", r["kind"])]
         ok = sum(1 for r in chosen if r["passed"])
-        lines.append(f"  {kind:<14}{100.0 * ok / max(1, len(chosen)):7.1f}%  {ok}/{len(chosen)}")
+        hosted = sum(1 for r in chosen if r["failure"] != NO_SHAPE)
+        both = f"{100.0 * ok / max(1, len(chosen)):7.1f}%  {f'{ok}/{len(chosen)}':<9}"
+        lines.append(f"  {kind:<14}{both}{100.0 * ok / max(1, hosted):7.1f}%  {ok}/{hosted}")
     counts = Counter(str(r["failure"]) for r in rows if not r["passed"])
     lines.append("  failures: " + ", ".join(f"{c} {counts[c]}" for c in FAILURE_CLASSES))
     replaced = sum(1 for r in rows if r.get("skipped") and r["failure"] != "planning failed")

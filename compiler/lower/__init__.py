@@ -80,13 +80,16 @@ def stagings_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: 
     limit, limit_fact = _limit(scenario, notes := list(notes))
     first: UnsatError | None = None
     found = False
-    for rotated in _rotations(scenario, match):
-        for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match):
-            if isinstance(item, UnsatError):
-                first = first or item
-            else:
-                found = True
-                yield item
+    # a frontal crash met at a corner across a crossing (contact._corner) only after every other
+    # staging: a turn across the partner's path that meets it head-on is the likelier crash
+    for corner in (False, True) if crash.type is CrashType.FRONTAL else (False,):
+        for rotated in _rotations(scenario, match):
+            for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match, corner):
+                if isinstance(item, UnsatError):
+                    first = first or item
+                else:
+                    found = True
+                    yield item
     if not found:
         assert first is not None
         raise first
@@ -109,8 +112,10 @@ def _lower_rotated(
     limit: float,
     limit_fact: Fact,
     chosen: SiteMatch,
+    corner: bool = False,
 ) -> Iterator[Lowered | UnsatError]:
-    """The solved stagings on one rotation of the site, in order, with the reason each one that fails does."""
+    """The solved stagings on one rotation of the site, in order, with the reason each one that fails
+    does; `corner`: those met at a corner (contact._corner) alone, else all others."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     notes = notes + list(match.clamped)
@@ -122,8 +127,10 @@ def _lower_rotated(
     for variant, prefer, why in _stagings(scenario, crash.type, crash.striker, crash.victim):
         routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer)
         striker, victim = routes[crash.striker], routes[crash.victim]
-        found = contacts(striker, victim, crash.type)
+        found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
         if not found:
+            if corner:
+                continue  # the reason is the first pass's
             yield UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
             continue
         extra = [why] if why else []

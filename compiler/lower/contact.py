@@ -50,6 +50,10 @@ FRONTAL_CROSSING = CRASH_ANGLES["frontal"][0]
 # A victim whose front has turned further than this from the striker's heading has left the lane
 # they shared: 15 degrees inside every oracle's bound for a rear-end.
 ALONG = CRASH_ANGLES["rear_end"][1] - 15.0
+# Lines crossing between these angles can also meet front to front at a corner: the striker's front
+# corner just inside the victim's way, struck square by the victim's front face (crashes.fits).
+CORNER_ANGLES = (CRASH_ANGLES["rear_end"][1] + 15.0, FRONTAL_CROSSING)
+CORNER_DEPTH = 0.5  # m the striker's front corner is into the victim's way: inside the corner of its front
 FACE = {CrashType.REAR_END: 1.0, CrashType.FRONTAL: 0.0, CrashType.SIDE: 0.5}
 # A striker backing into its victim leads with its rear: the crash type reads with front and rear
 # swapped on both bodies (compiler/crashes.py), so the victim's face is the other type's, and a rear
@@ -83,7 +87,7 @@ class Contact:
     sign: int  # +1: same direction; -1: opposite; 0: a crossing (lo == hi, s_v = offset)
     offset: float
     angle: float  # degrees between the two directions of travel at the contact, 0..180
-    kind: str  # 'crossing', 'shared' or 'offset' (fronts meet head-on beside each other)
+    kind: str  # 'crossing', 'shared', 'offset' (fronts meet head-on beside each other) or 'corner' (_corner)
 
     def victim_s(self, s: float) -> float:
         return self.offset + self.sign * s if self.sign else self.offset
@@ -146,10 +150,12 @@ def _accepts(crash: CrashType, c: Contact) -> bool:
     if crash is CrashType.REAR_END:
         return (c.kind == "shared" and c.sign == 1) or (c.kind == "crossing" and c.angle < 45.0)
     if crash is CrashType.FRONTAL:
-        return (c.kind == "shared" and c.sign == -1) or (
-            c.kind in ("crossing", "offset") and c.angle >= FRONTAL_CROSSING
+        return (
+            (c.kind == "shared" and c.sign == -1)
+            or (c.kind in ("crossing", "offset") and c.angle >= FRONTAL_CROSSING)
+            or c.kind == "corner"
         )
-    if c.kind == "offset":
+    if c.kind in ("offset", "corner"):
         return False
     return (c.kind == "crossing" and 5.0 <= c.angle <= 175.0) or (c.kind == "shared" and c.hi - c.lo < 8.0)
 
@@ -280,6 +286,8 @@ def _meetings(
             i = back
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "crossing"))
+        if CORNER_ANGLES[0] < angle[i] < CORNER_ANGLES[1]:
+            found.append(_corner(s_striker, u + k, float(angle[i]), striker.body, victim.body))
     # Fronts meet head-on a little to one side of each other before the lines cross (a car
     # turning across an oncoming one is hit early in its turn): an offset frontal contact.
     offset = (d[np.arange(len(a)), nearest] < FRONT_OFFSET) & (angle >= HEAD_ON) & ~parallel
@@ -288,6 +296,15 @@ def _meetings(
         s_striker, u = float(sa[i]), float(sb[nearest[i]])
         found.append(Contact(s_striker, s_striker, 0, u + k, float(angle[i]), "offset"))
     return found
+
+
+def _corner(s: float, u: float, angle: float, striker: Body, victim: Body) -> Contact:
+    """Two fronts met across a crossing near right angles (`crashes.fits`): the striker's front is
+    CORNER_DEPTH into the victim's way when the victim's front reaches the striker's near side, so
+    the striker's leading corner enters the victim's front face. `s`, `u`: where the lines cross."""
+    across = max(np.sin(np.radians(angle)), 0.5)
+    ahead = (victim.width / 2.0 - CORNER_DEPTH) / across  # the striker's front short of the crossing
+    return Contact(s - ahead, s - ahead, 0, u - striker.width / 2.0 / across, angle, "corner")
 
 
 def _along_face(
@@ -474,4 +491,6 @@ def describe(c: Contact) -> str:
         return f"paths cross at {c.angle:.0f} degrees"
     if c.kind == "offset":
         return f"fronts pass beside each other at {c.angle:.0f} degrees"
+    if c.kind == "corner":
+        return f"paths cross at {c.angle:.0f} degrees, a front corner into a front"
     return f"paths share {c.hi - c.lo:.0f} m of lane, {'same' if c.sign == 1 else 'opposite'} direction"

@@ -10,7 +10,15 @@ from sovarc.compiler.maps.load import RoadMap, load_map
 from sovarc.compiler.maps.needs import Need, scenario_needs
 from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive
 from sovarc.compiler.maps.networks import network_of, with_opendrive
-from sovarc.compiler.maps.search import Placement, SiteMatch, match_site, match_sites, pick_diverse, site_rotations
+from sovarc.compiler.maps.search import (
+    Placement,
+    SiteMatch,
+    has_shape,
+    match_site,
+    match_sites,
+    pick_diverse,
+    site_rotations,
+)
 from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites
 
 __all__ = [
@@ -25,6 +33,7 @@ __all__ = [
     "ToolError",
     "convert_opendrive",
     "find_sites",
+    "has_shape",
     "load_map",
     "match_site",
     "match_sites",

@@ -186,7 +186,8 @@ class RoadNet:
 
     def chain(self, edge: Any, *, through: bool = False) -> list[Any]:
         """The whole road `edge` is on, in its direction: back and on through pass-through nodes
-        (and, with `through`, through the junctions where it is the main road)."""
+        (and, with `through`, through the junctions where it is the main road), never into its
+        own other direction."""
         seen = {edge.getID()}
         edges = [edge]
 
@@ -198,10 +199,16 @@ class RoadNet:
             found = self.next_edge(e)
             return found if found is not None or not through else self._through_next.get(e.getID())
 
-        while (back := before(edges[0])) is not None and back.getID() not in seen:
+        def other_way(e: Any) -> bool:
+            # a road that runs on into its own other direction (a turning loop, a cul-de-sac's
+            # bulb) ends there: its two directions are partners, not one chain
+            back = self.reverse(e)
+            return back is not None and back.getID() in seen
+
+        while (back := before(edges[0])) is not None and back.getID() not in seen and not other_way(back):
             seen.add(back.getID())
             edges.insert(0, back)
-        while (on := after(edges[-1])) is not None and on.getID() not in seen:
+        while (on := after(edges[-1])) is not None and on.getID() not in seen and not other_way(on):
             seen.add(on.getID())
             edges.append(on)
         return edges

@@ -34,6 +34,7 @@ from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, RoadKind, Scenario
 
 ROTATIONS = (0, 90, 180, 270)
+BY_GEOMETRY = "laid across it by the arms' geometry"  # ends the note of a move with no connection in the map
 FRONTAL_ARMS = CRASH_ANGLES["frontal"][0]  # degrees two straight-over paths must cross at for a frontal crash
 
 
@@ -176,6 +177,13 @@ def _fit(site: Site, needs: tuple[Need, ...], rotation: int, clamp: bool) -> Sit
     return SiteMatch(site, rotation, arms, tuple(placements), tuple(notes))
 
 
+def has_shape(site: Site, needs: tuple[Need, ...]) -> bool:
+    """Whether the site has the shape the needs ask for: its lanes, and its arms where the moves lead
+    (a move its map draws no connection for, laid across by the arms' geometry, counts: the road is
+    there). A fit only with lanes clamped is a site of another shape."""
+    return any(all(note.endswith(BY_GEOMETRY) for note in m.clamped) for m in site_rotations(site, needs, clamp=True))
+
+
 def _lanes_ok(needed: int, have: int, what: str, clamp: bool, notes: list[str]) -> bool:
     if needed <= have:
         return True
@@ -203,7 +211,7 @@ def _move_ok(site: Site, arm: Arm, need: Need, clamp: bool, notes: list[str]) ->
             targets = [across]
             notes.append(
                 f"{need.participant}: the junction has no {need.move.value} connection from arm {arm.id}; "
-                "laid across it by the arms' geometry"
+                + BY_GEOMETRY
             )
     if need.against_after:
         targets = [a for a in targets if a.incoming]

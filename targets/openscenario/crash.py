@@ -181,8 +181,15 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
         yield Finding("impact_angle", False, f"unknown crash type {crash.type!r}")
         return
     lo, hi = CRASH_ANGLES[crash.type]
+    s_box, v_box = scene.box(crash.striker, touch), scene.box(crash.victim, touch)
+    square = pressed(s_box, v_box, separation(s_box, v_box)[1])[1]
+    backing = _backing(scene, crash.striker, touch)
     if lo <= relative <= hi:
         message = f"{relative:.0f}° between the headings fits a {crash.type} crash"
+        yield Finding("impact_angle", True, message, touch)
+    elif crash.type == "frontal" and relative > CRASH_ANGLES["rear_end"][1] and square in _frontal_faces(backing):
+        # a crossing met front to front at a corner (compiler/crashes.corner_frontal)
+        message = f"{relative:.0f}° between the headings, the victim's front face entered square: a frontal crash"
         yield Finding("impact_angle", True, message, touch)
     else:
         message = f"{relative:.0f}° between the headings at impact; a {crash.type} crash needs {lo:g}° to {hi:g}°"
@@ -200,14 +207,11 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     facts["striker_face"] = "-".join(s_faces)
     facts["victim_face"] = "-".join(v_faces)
     problems = []
-    backing = _backing(scene, crash.striker, touch)
     lead = "rear" if backing else "front"
     if lead not in s_faces:
         problems.append(f"the striker {crash.striker} hits with its {_words(s_faces)}, not its {lead}")
     wanted = (BACKED_INTO if backing else VICTIM_FACES)[crash.type]
     # which face of a corner is struck: the one definition (compiler/crashes.struck_face)
-    s_box, v_box = scene.box(crash.striker, touch), scene.box(crash.victim, touch)
-    square = pressed(s_box, v_box, separation(s_box, v_box)[1])[1]
     struck = struck_face(v_faces, square if square in v_faces else None, relative, backing)
     if struck not in wanted:
         hit = _words(v_faces) + ("" if len(v_faces) == 1 else f", struck on its {struck}")
@@ -217,6 +221,10 @@ def _angle_and_faces(scene: Scene, crash: Crash, touch: float, facts: dict[str, 
     else:
         faces = f"{_words(s_faces)} of {crash.striker} into {_words(v_faces)} of {crash.victim}"
         yield Finding("impact_faces", True, f"{faces}, as a {crash.type} crash", touch)
+
+
+def _frontal_faces(backing: bool) -> tuple[str, ...]:
+    return tuple((BACKED_INTO if backing else VICTIM_FACES)["frontal"])
 
 
 def _backing(scene: Scene, name: str, t: float) -> bool:

@@ -128,3 +128,25 @@ def test_a_backing_striker_strikes_the_corner_end_its_crash_type_names() -> None
     assert struck_face(("front", "left"), None, 10.0, backing=True) == "front"
     assert struck_face(("rear", "left"), None, 10.0, backing=True) == "left"
     assert struck_face(("rear", "left"), None, 170.0, backing=True) == "rear"
+
+
+def _crossing_touch(striker_front_y: float, victim_front_x: float) -> Contact:
+    """A car heading north (front bumper at x = 0) and one heading west (front bumper at y = 0),
+    each moving 2 m in a second from the given positions, until they first touch."""
+    striker = (_car(0.0, striker_front_y, 0.0), _car(0.0, striker_front_y + 2.0, 0.0))
+    victim = (_car(victim_front_x, 0.0, 270.0), _car(victim_front_x - 2.0, 0.0, 270.0))
+    return first_touch(0.0, 1.0, striker, victim)
+
+
+def test_fronts_met_at_right_angles_are_frontal_only_where_the_victims_front_face_is_entered() -> None:
+    # the striker's front-right corner half a metre into the victim's way when the victim's front
+    # reaches it: the victim's front face is struck square, a frontal crash at 90 degrees
+    corner = _crossing_touch(-1.4, CAR_W / 2 + 1.0)
+    assert corner.angle == pytest.approx(90.0)
+    assert corner.pressed[1] == "front" and "front" in corner.zones[0]
+    assert fits(CrashType.FRONTAL, corner)
+    # the victim a little earlier: the striker's front runs into its left side, a side crash
+    side = _crossing_touch(-2.0, -0.5)
+    assert victim_face(side) == "left"
+    assert not fits(CrashType.FRONTAL, side)
+    assert fits(CrashType.SIDE, side)

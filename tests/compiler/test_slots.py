@@ -17,14 +17,16 @@ from sovarc.dsl.errors import Diagnostic, UnsatError
 from tests.compiler.cli.test_cli import sovarc
 from tests.conftest import EXAMPLES
 
-# Both cars drive straight across and meet front to front: only a junction whose roads cross
-# obliquely (100 degrees or more between the paths) can host it; most of the town's cross at 90.
-OBLIQUE_FRONTAL = """\
-scenario oblique_frontal {
-  road { kind intersection lanes 1 speed_limit 48 km/h }
-  vehicle V1 { heading west lane 1 actions { follow_lane go_across } }
-  vehicle V2 { heading north lane 1 actions { follow_lane go_across } }
-  crash { type frontal striker V2 victim V1 }
+# A follower strikes the side of a car turning left off a straight road: on a road where the turn
+# clears the follower's lane before it has turned far enough to be met on its side, the follower can
+# only meet its rear, and that site cannot host the crash. (Crossings at right angles host frontal
+# crashes between two cars going straight over since the corner frontal, so that no longer serves.)
+DRIVEWAY_SIDE = """\
+scenario driveway_side {
+  road { kind straight lanes 1 speed_limit 48 km/h }
+  vehicle V1 { heading north lane 1 actions { follow_lane } }
+  vehicle V2 { heading north lane 1 actions { follow_lane turn_left } }
+  crash { type side striker V1 victim V2 }
 }
 """
 
@@ -81,9 +83,9 @@ def test_no_spare_keeps_the_first_choice() -> None:
     assert [s.site for s in slots] == ["a", "b"] and not slots[0].skipped and tried == ["a", "b"]
 
 
-def test_an_oblique_frontal_crash_moves_to_the_junctions_that_can_host_it() -> None:
+def test_a_crash_moves_to_the_sites_that_can_host_it() -> None:
     town = load_map(EXAMPLES / "maps" / "town.net.xml")
-    scenario = parse(OBLIQUE_FRONTAL, "oblique.sov")
+    scenario = parse(DRIVEWAY_SIDE, "driveway.sov")
     first = stage_sites(scenario, Options(map=town, roads=3, spare=0))
     spared = stage_sites(scenario, Options(map=town, roads=3))
     assert sum(r.plan is not None for r in spared) > sum(r.plan is not None for r in first)
@@ -97,21 +99,21 @@ def test_an_oblique_frontal_crash_moves_to_the_junctions_that_can_host_it() -> N
 
 
 def test_eval_srr_counts_the_sites_given_up(tmp_path: Path) -> None:
-    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
+    (tmp_path / "driveway.sov").write_text(DRIVEWAY_SIDE, encoding="utf-8")
     out = tmp_path / "srr.json"
-    spared = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--json", str(out))
+    spared = sovarc("eval", "srr", str(tmp_path / "driveway.sov"), "--json", str(out))
     assert spared.returncode == 0, spared.stderr
     assert "sites that could not host their crash:" in spared.stdout
     rows = json.loads(out.read_text(encoding="utf-8"))["town.net.xml"]["rows"]
     assert any(row["skipped"] for row in rows) and all("reason" in s for row in rows for s in row["skipped"])
-    strict = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "0")
+    strict = sovarc("eval", "srr", str(tmp_path / "driveway.sov"), "--spare-sites", "0")
     assert "could not host" not in strict.stdout
-    assert sovarc("eval", "srr", str(tmp_path / "oblique.sov"), "--spare-sites", "-1").returncode == 2
+    assert sovarc("eval", "srr", str(tmp_path / "driveway.sov"), "--spare-sites", "-1").returncode == 2
 
 
 def test_the_output_folder_says_which_sites_were_given_up(tmp_path: Path) -> None:
-    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
-    result = sovarc("lower", str(tmp_path / "oblique.sov"), "--roads", "3", "-o", str(tmp_path / "out"))
+    (tmp_path / "driveway.sov").write_text(DRIVEWAY_SIDE, encoding="utf-8")
+    result = sovarc("lower", str(tmp_path / "driveway.sov"), "--roads", "3", "-o", str(tmp_path / "out"))
     written = (tmp_path / "out" / "summary.txt").read_text(encoding="utf-8")
     assert written == result.stdout and "could not host the crash" in written
     given_up = [line.split()[1] for line in written.splitlines() if line.startswith("note:")]
@@ -143,14 +145,14 @@ def test_a_defect_on_one_site_is_that_site_s_error_and_the_next_site_is_tried(mo
 
 
 def test_eval_srr_keeps_two_maps_of_one_file_name_apart(tmp_path: Path) -> None:
-    (tmp_path / "oblique.sov").write_text(OBLIQUE_FRONTAL, encoding="utf-8")
+    (tmp_path / "driveway.sov").write_text(DRIVEWAY_SIDE, encoding="utf-8")
     maps = []
     for city in ("a", "b"):
         (tmp_path / city).mkdir()
         maps += ["-m", str(tmp_path / city / "town.net.xml")]
         (tmp_path / city / "town.net.xml").write_bytes((EXAMPLES / "maps" / "town.net.xml").read_bytes())
     out = tmp_path / "srr.json"
-    done = sovarc("eval", "srr", str(tmp_path / "oblique.sov"), *maps, "--roads", "1", "--json", str(out))
+    done = sovarc("eval", "srr", str(tmp_path / "driveway.sov"), *maps, "--roads", "1", "--json", str(out))
     assert done.returncode == 0, done.stderr
     assert list(json.loads(out.read_text(encoding="utf-8"))) == [maps[1], maps[3]]
     assert f"SRR on {maps[1]}" in done.stdout and f"SRR on {maps[3]}" in done.stdout

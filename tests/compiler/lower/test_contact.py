@@ -9,7 +9,16 @@ import pytest
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.geometry.trailing import trailing_headings
-from sovarc.compiler.lower.contact import ALONG, FACE, SIDE_OVERLAP, SIDE_TURNED, TURNING_SIDE, contacts, describe
+from sovarc.compiler.lower.contact import (
+    ALONG,
+    CORNER_DEPTH,
+    FACE,
+    SIDE_OVERLAP,
+    SIDE_TURNED,
+    TURNING_SIDE,
+    contacts,
+    describe,
+)
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.vehicles import CAR, model_of
 from sovarc.dsl.ir import CrashType, Participant, Role
@@ -37,8 +46,13 @@ def test_a_crossing_is_one_point_for_side_and_frontal_but_not_rear_end() -> None
     # the victim's front is half a body past the crossing, so that its side's middle is there
     assert side.victim_s(side.lo) == pytest.approx(50.0 + FACE[CrashType.SIDE] * CAR.length)
     assert contacts(NORTH, EAST, CrashType.REAR_END) == []
-    # at right angles fronts can only meet corner to corner: no frontal crash for any oracle
-    assert contacts(NORTH, EAST, CrashType.FRONTAL) == []
+    # at right angles fronts meet only at a corner: the striker's front corner CORNER_DEPTH into the
+    # victim's way as the victim's front reaches the striker's near side (crashes.corner_frontal)
+    (corner,) = contacts(NORTH, EAST, CrashType.FRONTAL)
+    assert (corner.kind, corner.angle) == ("corner", pytest.approx(90.0))
+    assert corner.lo == pytest.approx(50.0 - (CAR.width / 2 - CORNER_DEPTH), abs=0.05)
+    assert corner.victim_s(corner.lo) == pytest.approx(50.0 - CAR.width / 2, abs=0.05)
+    assert all(c.kind != "corner" for c in contacts(NORTH, EAST, CrashType.SIDE))
     (frontal,) = contacts(NORTH, ONCOMING_ACROSS, CrashType.FRONTAL)
     assert frontal.angle == pytest.approx(120.0, abs=0.5)
     assert frontal.victim_s(frontal.lo) == pytest.approx(50.0)  # fronts meet

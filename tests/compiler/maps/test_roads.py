@@ -99,6 +99,18 @@ def test_the_directions_of_a_road_split_at_different_nodes_are_paired(tmp_path: 
     assert east.incoming[0].edges == ("e1", "e2") and east.outgoing[0].edges == ("w1", "w2")
 
 
+def test_a_road_ending_in_a_turning_loop_is_still_two_way(tmp_path: Path) -> None:
+    # 200 m of two-way road whose end is a one-way loop back into it (a turning circle, as CARLA's
+    # Town06 avenue ends): the road does not run on round the loop into its own other direction
+    nodes = {"a": (0, 0), "b": (200, 0), "p": (240, 8), "r1": (270, 20), "r2": (290, 0), "r3": (270, -20)}
+    nodes["q"] = (240, -8)
+    loop = ["l1 b p 1", "l2 p r1 1", "l3 r1 r2 1", "l4 r2 r3 1", "l5 r3 q 1", "l6 q b 1"]
+    road_map = build(tmp_path, nodes, ["e a b 1", *(f"{leg} oneway" for leg in loop)])
+    (site,) = find_sites(road_map, S)
+    assert len(site.arms) == 2 and all(a.two_way for a in site.arms)
+    assert site.min_length == pytest.approx(200.0, abs=5.0)
+
+
 def test_a_divided_road_gives_one_way_sites(tmp_path: Path) -> None:
     # two one-way carriageways of two lanes, 20 m apart: no lane line between them
     nodes = {"a": (0, 0), "b": (200, 0), "c": (200, 20), "d": (0, 20)}
