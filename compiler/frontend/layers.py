@@ -24,8 +24,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from difflib import SequenceMatcher
+from functools import cached_property
 
-from sovarc.compiler.frontend.clauses import pieces
+from sovarc.compiler.frontend.clauses import Piece, pieces
 from sovarc.compiler.frontend.sentences import sentences
 from sovarc.compiler.frontend.text import describes_impact, first_impact, prepare
 
@@ -65,13 +66,17 @@ class Shown:
             return before is not None and set(_NAMED.findall(before.text)) == {pid}
         return False
 
-    def pieces_of(self, number: int, pid: str) -> list[str]:
-        """The pieces of sentence `number` that are `pid`'s own doing (`clauses.pieces`: cut at each
-        subject, read in the shown sentences' order so that "he" carries the last subject)."""
+    @cached_property
+    def _pieces(self) -> list[Piece]:
+        """The shown sentences cut at each subject (`clauses.pieces`), in their order so that "he"
+        carries the last subject: computed once, since every evidence check reads them."""
         texts = [s.text for s in self.sentences]
-        ids = sorted({name for text in texts for name in _NAMED.findall(text)})
+        return pieces(texts, sorted({name for text in texts for name in _NAMED.findall(text)}))
+
+    def pieces_of(self, number: int, pid: str) -> list[str]:
+        """The pieces of sentence `number` that are `pid`'s own doing."""
         index = next((i for i, s in enumerate(self.sentences) if s.number == number), None)
-        return [p.text for p in pieces(texts, ids) if p.sentence == index and pid in p.who]
+        return [p.text for p in self._pieces if p.sentence == index and pid in p.who]
 
     def text(self) -> str:
         return "\n".join(f"[{s.number}] {s.text}" for s in self.sentences)
