@@ -20,7 +20,7 @@ from sovarc.compiler.lower.consistency import check_headings
 from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
-from sovarc.compiler.lower.routes import vehicle_route
+from sovarc.compiler.lower.routes import DEFAULT_MOVES, vehicle_route
 from sovarc.compiler.lower.solve import V_PED_MAX, ConflictError, Fact, Problem, Solution, solve
 from sovarc.compiler.maps import RoadMap, SiteMatch, match_sites, scenario_needs, site_rotations
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
@@ -82,9 +82,12 @@ def stagings_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: 
     found = False
     # a frontal crash met at a corner across a crossing (contact._corner) only after every other
     # staging: a turn across the partner's path that meets it head-on is the likelier crash
-    for corner in (False, True) if crash.type is CrashType.FRONTAL else (False,):
+    # last, the pair's junction moves made from the lanes the report puts them in, across the lanes
+    # the map makes those moves from (routes._from_own_lane): the map's arrows are kept while they can be
+    passes = [(False, False)] + ([(True, False)] if crash.type is CrashType.FRONTAL else []) + [(False, True)]
+    for corner, keep in passes:
         for rotated in _rotations(scenario, match):
-            for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match, corner):
+            for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match, corner, keep):
                 if isinstance(item, UnsatError):
                     first = first or item
                 else:
@@ -113,19 +116,26 @@ def _lower_rotated(
     limit_fact: Fact,
     chosen: SiteMatch,
     corner: bool = False,
+    keep: bool = False,
 ) -> Iterator[Lowered | UnsatError]:
     """The solved stagings on one rotation of the site, in order, with the reason each one that fails
-    does; `corner`: those met at a corner (contact._corner) alone, else all others."""
+    does; `corner`: those met at a corner (contact._corner) alone, else all others; `keep`: only the
+    one with the pair's junction moves made from their own lanes, when the map makes one of them
+    from another lane (none else)."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
+    kept = _off_their_lanes(scenario, match, (crash.striker, crash.victim)) if keep else set()
+    if keep and not kept:
+        return
     notes = notes + list(match.clamped)
     if match.rotation != chosen.rotation:
         notes.append(
             f"staged with the report's compass turned {match.rotation} degrees, not {chosen.rotation}: "
             "the crash cannot happen as first placed on this site"
         )
-    for variant, prefer, why in _stagings(scenario, crash.type, crash.striker, crash.victim):
-        routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer)
+    stagings = [(scenario, {}, None)] if keep else _stagings(scenario, crash.type, crash.striker, crash.victim)
+    for variant, prefer, why in stagings:
+        routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer, kept)
         striker, victim = routes[crash.striker], routes[crash.victim]
         found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
         if not found:
@@ -312,6 +322,7 @@ def _routes(
     striker: str,
     victim: str,
     prefer: dict[str, tuple[ActionKind, str]],
+    keep: set[str] | frozenset[str] = frozenset(),
 ) -> dict[str, Route]:
     routes: dict[str, Route] = {}
     people = [p for p in scenario.participants if p.role is Role.PEDESTRIAN]
@@ -320,7 +331,9 @@ def _routes(
             side = _driveway_side(p, scenario, striker, victim)
             partner = scenario.participant(victim if p.id == striker else striker)
             wrong_way = partner.lane if partner is not None and isinstance(partner.lane, int) else None
-            routes[p.id] = vehicle_route(p, match, road_map, _preferred(p, limit), side, wrong_way, prefer.get(p.id))
+            routes[p.id] = vehicle_route(
+                p, match, road_map, _preferred(p, limit), side, wrong_way, prefer.get(p.id), p.id in keep
+            )
     for p in people:
         partner_id = victim if p.id == striker else striker
         partner = routes.get(partner_id) or next(iter(routes.values()), None)
@@ -330,6 +343,29 @@ def _routes(
         exit_s = max((e.hi for e in partner.events if e.kind in JUNCTION_MOVES), default=None)
         routes[p.id] = pedestrian_route(p, partner, match, crash, exit_s)
     return routes
+
+
+def _off_their_lanes(scenario: Scenario, match: SiteMatch, ids: tuple[str, ...]) -> set[str]:
+    """Those of `ids` whose junction move (named, else the one routes plan: straight on where the
+    arm has a way, routes.DEFAULT_MOVES) the map makes from their arm, but not from the lane the
+    report puts them in (so lowering would move them over first)."""
+    found = set()
+    for pid in ids:
+        p, placement = scenario.participant(pid), match.placement(pid)
+        if p is None or p.role is not Role.VEHICLE or placement is None or placement.arm is None:
+            continue
+        arm = next(a for a in match.site.arms if a.id == placement.arm)
+        if not isinstance(p.lane, int) or not arm.incoming:
+            continue
+        named = _junction_move(p)
+        for kind in (named.kind,) if named is not None else DEFAULT_MOVES:
+            ways = [c for c in match.site.connections_from(arm) if c.direction in JUNCTION_MOVES[kind]]
+            if ways:
+                lane = arm.incoming[min(placement.lane or 1, len(arm.incoming)) - 1].id
+                if not any(c.from_lane == lane for c in ways):
+                    found.add(pid)
+                break
+    return found
 
 
 def _move_choices(*people: Participant) -> list[dict[str, ActionKind]]:

@@ -47,10 +47,13 @@ def vehicle_route(
     side: Side,
     wrong_way_lane: int | None = None,
     prefer: tuple[ActionKind, str] | None = None,
+    keep_lane: bool = False,
 ) -> Route:
     """`side`: where a driveway move without a stated side goes; `wrong_way_lane`: which lane of the
     other direction a retrograde move drives in (the crash partner's); `prefer`: the junction move
-    (and why) to plan when the actions name none. All three are chosen by the caller."""
+    (and why) to plan when the actions name none; `keep_lane`: make the junction move from the lane
+    the car drives in, across its neighbours, where the map makes it from another lane only
+    (`_from_own_lane`). All four are chosen by the caller."""
     if is_backing(p):  # parked, or backing along the road (backing.py)
         return backing_route(p, match, participant_model(p).body, lanes_touched)
     placement = match.placement(p.id)
@@ -84,7 +87,7 @@ def vehicle_route(
         _along(drive, actions, range(len(actions)), start=max(LEAD + 10.0, 0.3 * drive.line.length), side=side)
         entry = None
     else:
-        entry, approach_lanes = _through_junction(drive, p, match, road_map, side, prefer)
+        entry, approach_lanes = _through_junction(drive, p, match, road_map, side, prefer, keep_lane)
     events = order_stops(actions, drive.stretches, drive.line.length)
     first = min((e.lo for e in events if e.kind is not ActionKind.STOP), default=entry or drive.line.length * 0.6)
     if entry is not None:
@@ -147,7 +150,13 @@ def _along(drive: Drive, actions: tuple[Any, ...], indices: range, *, start: flo
 
 
 def _through_junction(
-    drive: Drive, p: Participant, match: SiteMatch, road_map: RoadMap, side: Side, prefer: tuple[ActionKind, str] | None
+    drive: Drive,
+    p: Participant,
+    match: SiteMatch,
+    road_map: RoadMap,
+    side: Side,
+    prefer: tuple[ActionKind, str] | None,
+    keep_lane: bool = False,
 ) -> tuple[float, tuple[LaneInfo, ...]]:
     """Extend the drive's line across the junction; returns the stop line's arc length and the
     lanes of the arm the car may use up to it (none when it does not drive there in its own
@@ -175,7 +184,7 @@ def _through_junction(
         return drive.line.length, ()
     to = actions[move_at].to if move_at is not None else None
     index = move_at if move_at is not None else -1
-    turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map, index)
+    turn, exit_corridor, exit_number = _junction_line(drive, arm, move, to, match, road_map, index, keep_lane)
     entry = drive.line.length
     # a U-turn's or a wrong-way line is laid out, and so is a corner taken wide (its body crosses lane lines)
     own = () if drive.against or move is ActionKind.U_TURN or drive.wide else arm.incoming
@@ -252,7 +261,14 @@ def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
 
 
 def _junction_line(
-    drive: Drive, arm: Arm, move: ActionKind, to: Any, match: SiteMatch, road_map: RoadMap, index: int
+    drive: Drive,
+    arm: Arm,
+    move: ActionKind,
+    to: Any,
+    match: SiteMatch,
+    road_map: RoadMap,
+    index: int,
+    keep_lane: bool = False,
 ) -> tuple[Polyline, Corridor, int]:
     """The line across the junction, the corridor it leaves on and the lane number it enters
     (`index`: the move's action; -1 when the actions name none)."""
@@ -261,6 +277,8 @@ def _junction_line(
     if not drive.against and move is not ActionKind.U_TURN and across is None:
         current = drive.corridor.own[drive.lane - 1]
         connection = _pick_connection(match, arm, move, current, to)
+        if connection.from_lane != current.id and keep_lane:
+            return _from_own_lane(drive, match, move, connection, current)
         if connection.from_lane != current.id:
             number = _number(arm, connection.from_lane)
             try:
@@ -306,6 +324,25 @@ def _junction_line(
     drive.lanes.update(_via_lanes(road_map, connection))
     drive.edges.extend(edge for edge in connection.edges if edge not in drive.edges)
     return turn, corridor, target.number
+
+
+def _from_own_lane(
+    drive: Drive, match: SiteMatch, move: ActionKind, connection: Connection, current: LaneInfo
+) -> tuple[Polyline, Corridor, int]:
+    """The move made from the lane the car is in, laid by geometry into the lane the map's own
+    connection for it enters: a report that names the lane a car turned from (a right turn from
+    the middle lane, straight on from a turn lane) describes a car that crossed its neighbours'
+    paths to do it, whatever the map's arrows say. Tried only after every staging that keeps them."""
+    target = _lane(match, connection.to_lane)
+    exit_arm = match.site.arm_of_lane(connection.to_lane)
+    assert exit_arm is not None
+    corridor = Corridor.leaving(exit_arm)
+    end, heading = drive.line.point(drive.line.length), drive.line.heading(drive.line.length)
+    start = corridor.own_line(target.number)
+    drive.notes.append(
+        f"makes its {move.value} from lane {current.number}, as reported, across the lanes the map makes it from"
+    )
+    return bezier(end, heading, start.point(0.0), start.heading(0.0)), corridor, target.number
 
 
 def _u_turn(drive: Drive, arm: Arm, to: Any, site: str, index: int) -> tuple[Polyline, Corridor, int]:

@@ -53,6 +53,7 @@ REAR_END_GAIN = 1.5  # m/s a rear-end striker is faster than its moving victim
 MIN_LEAD = 6.0  # m a vehicle drives before the crash at the least (LEAD is the natural length)
 AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach speed
 START_TOUCH = 0.5  # m: lines that begin this close begin in one lane
+START_TURN = 60.0  # degrees: lines that begin together and part by less go one way from there
 START_GAP = 1.0  # m between two vehicles that start one behind the other in one lane
 RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 100 000
 # Time limits, for the searches the work budget does not stop (nonlinear steps count little).
@@ -395,10 +396,12 @@ def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> 
 
 
 def _start_together(a: Route, b: Route) -> bool:
-    """The two lines begin at one place, going one way."""
+    """The two lines begin at one place, going one way: bodies started near one arc length would
+    overlap. One way is within START_TURN: lines of one lane that part soon after they begin (a turn
+    pocket opening off it, smoothed into a bend) leave it at a wide angle."""
     gap = math.dist(a.line.point(0.0), b.line.point(0.0))
     turn = abs(angle_diff(a.line.heading(0.0), b.line.heading(0.0)))
-    return gap < START_TOUCH and turn < 20.0
+    return gap < START_TOUCH and turn < START_TURN
 
 
 def _spacing(problem: Problem, ahead: str) -> float:

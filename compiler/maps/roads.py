@@ -215,7 +215,10 @@ class RoadNet:
 
     def reach(self, edge: Any, forward: bool, length: float) -> list[Any]:
         """`edge` and the edges it continues as (forward) or continues (backward), in the direction
-        of travel, while the road keeps its car lane count, until `length` metres are covered."""
+        of travel, while the road keeps its car lane count, until `length` metres are covered.
+        Backward, it also runs on through a node where lanes open (a turn pocket, an added lane):
+        a car reaches such a lane from the one it branches off, so the road behind is its approach
+        too; the count is the narrower road's from there."""
         edges = [edge]
         count = len(self.lanes(edge))
         total = self.lanes(edge)[0].length
@@ -225,7 +228,9 @@ class RoadNet:
             if step is None or step.getID() in seen or not self.lanes(step):
                 break
             if len(self.lanes(step)) != count and self.lanes(step)[0].length > TINY:
-                break
+                if forward or len(self.lanes(step)) > count:
+                    break
+                count = len(self.lanes(step))
             seen.add(step.getID())
             total += self.lanes(step)[0].length
             if forward:
