@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
+import numpy as np
 import z3
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.lower.contact import Contact, meeting
@@ -53,6 +54,8 @@ REAR_END_GAIN = 1.5  # m/s a rear-end striker is faster than its moving victim
 MIN_LEAD = 6.0  # m a vehicle drives before the crash at the least (LEAD is the natural length)
 AFTER_CRASH = 3.0  # m past the contact whose curves still cap the approach speed
 START_TOUCH = 0.5  # m: lines that begin this close begin in one lane
+PART_STEP = 0.5  # m between the points where lines that begin together are compared
+PART_MARGIN = 0.3  # m between bodies side by side that have parted
 START_TURN = 60.0  # degrees: lines that begin together and part by less go one way from there
 START_GAP = 1.0  # m between two vehicles that start one behind the other in one lane
 RLIMIT = 5_000_000  # Z3 resource units per check: the problems here take under 100 000
@@ -382,9 +385,20 @@ def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> 
         ra, rb = problem.routes[a], problem.routes[b]
         if not _start_together(ra, rb):
             continue
-        if {a, b} == {problem.striker, problem.victim}:
+        parted = _parting(problem.routes[problem.victim], problem.routes[problem.striker], problem.contact.lo)
+        if {a, b} == {problem.striker, problem.victim} and parted is None:
             ahead, behind = problem.victim, problem.striker
             need(f"{ahead}.route", motions[ahead].start - motions[behind].start >= _spacing(problem, ahead))
+        elif {a, b} == {problem.striker, problem.victim}:
+            # they part before the crash (a pocket opens beside the lane): either may lead, and the
+            # one behind stays behind until they have parted
+            need(
+                f"{problem.victim}.route",
+                z3.Or(
+                    _in_turn(problem, motions, problem.victim, problem.striker, parted),
+                    _in_turn(problem, motions, problem.striker, problem.victim, parted),
+                ),
+            )
         else:
             need(
                 f"{b}.route",
@@ -393,6 +407,31 @@ def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> 
                     motions[a].start - motions[b].start >= _spacing(problem, a),
                 ),
             )
+
+
+def _in_turn(problem: Problem, motions: dict[str, Motion], ahead: str, behind: str, parted: float) -> Any:
+    """`ahead` starts a body length and START_GAP ahead of `behind`, and stays ahead until `behind`
+    reaches `parted`. The second is said for cruising legs that run on to the crash (their gap
+    changes linearly, so its two ends bound it); other legs are held to the start alone."""
+    lead, follow = motions[ahead], motions[behind]
+    order = lead.start - follow.start >= _spacing(problem, ahead)
+    legs = lead.legs[:1] + follow.legs[:1]
+    if len(legs) < 2 or any(leg.from_rest or leg.end is not None for leg in legs):
+        return order
+    first, second = legs
+    # the leader's front, less the spacing, at the time the follower's reaches `parted`, times its speed
+    gap = (first.start - parted - _spacing(problem, ahead)) * second.v + first.v * (parted - second.start)
+    return z3.And(order, gap >= 0)
+
+
+def _parting(a: Route, b: Route, before: float) -> float | None:
+    """Where two lines that begin together lie a body's width apart (their bodies side by side clear),
+    if that is before arc length `before`."""
+    apart = max(a.body.width, b.body.width) + PART_MARGIN
+    for s in np.arange(0.0, min(before, a.line.length, b.line.length), PART_STEP):
+        if math.dist(a.line.point(float(s)), b.line.point(float(s))) > apart:
+            return float(s)
+    return None
 
 
 def _start_together(a: Route, b: Route) -> bool:
