@@ -13,7 +13,8 @@ its `incoming` lanes travel in `heading`, its `outgoing` lanes the other way.
 
 Roads are read as a person sees them, not edge by edge (roads.py): a road runs on through the
 nodes netconvert adds where lanes begin or end, so a junction's arm reaches back through them
-(while its lane count stays, up to ARM_REACH) and a straight site is a stretch of bounded
+(while its lane count stays, or back through where lanes open beside it, a turn pocket, up to
+ARM_REACH) and a straight site is a stretch of bounded
 curvature along a road, wherever its edges split (straights.py). Such a lane is a chain of SUMO
 lanes (`LaneInfo.lanes`, `.edges`). A junction is a T or a cross by its arms' headings, and a
 junction netconvert built as several nodes (a divided road's carriageways each meeting a side
@@ -47,7 +48,7 @@ DEFAULT_MIN_LENGTH = 80.0  # m; a straight site must be at least this long
 CROSS_TOLERANCE = 35.0  # degrees an intersection's or T's arm may stray from its place in the cross
 # a turn by the exit arm's place in the cross, counted clockwise from the entry arm's (see search.py)
 TURNS = {0: "t", 1: "l", 2: "s", 3: "r"}
-ARM_REACH = 100.0  # m: a junction's arm reaches back this far through pass-through nodes (if its lanes stay)
+ARM_REACH = 100.0  # m: a junction's arm reaches back this far through pass-through nodes (RoadNet.reach)
 
 
 def find_sites(
@@ -182,7 +183,8 @@ def streams_cross(arms: list[Arm], connections: tuple[Connection, ...]) -> bool:
 
 def _arm_lanes(roads: RoadNet, arm: NodeArm) -> tuple[str, float, tuple[LaneInfo, ...], tuple[LaneInfo, ...]]:
     """An arm's id, heading and lanes, each lane chained back (incoming) or on (outgoing) through
-    pass-through nodes while the lane count stays, up to ARM_REACH metres."""
+    pass-through nodes while the lane count stays (incoming, also back through where lanes open:
+    RoadNet.reach), up to ARM_REACH metres."""
     incoming: tuple[LaneInfo, ...] = ()
     outgoing: tuple[LaneInfo, ...] = ()
     if arm.incoming is not None:
