@@ -135,7 +135,12 @@ def _lower_rotated(
         )
     stagings = [(scenario, {}, None)] if keep else _stagings(scenario, crash.type, crash.striker, crash.victim)
     for variant, prefer, why in stagings:
-        routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer, kept)
+        try:
+            routes = _routes(variant, match, road_map, limit, crash.striker, crash.victim, prefer, kept)
+        except LoweringError:
+            if not keep:
+                raise
+            return  # the last pass's own route cannot be laid (a corner too tight): the first reason stands
         striker, victim = routes[crash.striker], routes[crash.victim]
         found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
         if not found:
