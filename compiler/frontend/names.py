@@ -141,8 +141,16 @@ def _automated(text: str) -> tuple[str, str] | None:
     return text, said
 
 
-# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle".
-_SAME = {"passenger vehicle": "passenger car", "pick-up truck": "pickup truck", "sport utility vehicle": "suv"}
+# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle"; a cyclist is later
+# "the bicycle" it rides (the IR holds the rider and the bicycle as one vehicle).
+_SAME = {
+    "passenger vehicle": "passenger car",
+    "pick-up truck": "pickup truck",
+    "sport utility vehicle": "suv",
+    "bicycle": "cyclist",
+    "bicyclist": "cyclist",
+    "pedalcyclist": "cyclist",
+}
 _SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Following)\b[^,]*, ", re.I)
 
 

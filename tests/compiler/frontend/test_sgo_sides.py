@@ -1,0 +1,79 @@
+"""Fleet narratives, readings of the third SGO session, each on sentences written for these tests: lanes whose
+side of the road their use fixes, one cyclist said as its bicycle."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.compiler.frontend.lanes import lane_change_side
+from sovarc.compiler.frontend.names import label_parties
+from sovarc.dsl.ir import Action, ActionKind, Scenario, Side, Unknown
+from sovarc.dsl.span import Source
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
+
+
+def actions(s: Scenario, pid: str) -> list[Action]:
+    p = next(p for p in s.participants if p.id == pid)
+    return [] if isinstance(p.actions, Unknown) else list(p.actions)
+
+
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("changed lanes into the center turn lane", "left"),
+        ("began to change lanes into the centre shared turn lane ahead", "left"),
+        ("merged into the two-way left turn lane", "left"),
+        ("merged into the middle left-turn lane", "left"),
+        ("merged out of the bike lane into the travel lane", "left"),
+        ("merged from the bicycle lane into traffic", "left"),
+        # the side said wins over the lane's use
+        ("changed lanes to the right, out of the center turn lane", "right"),
+    ],
+)
+def test_a_lane_whose_use_fixes_its_side_says_where_the_change_went(text: str, side: str) -> None:
+    at = next(i for i, w in enumerate(text.split()) if w.startswith(("chang", "merg")))
+    start = len(" ".join(text.split()[:at])) + (1 if at else 0)
+    end = start + len(text.split()[at])
+    assert lane_change_side(text, start, end, "") == side
+
+
+def test_a_lane_change_said_by_no_side_and_no_lane_stays_unread() -> None:
+    text = "began to change lanes behind the bus"
+    assert lane_change_side(text, 9, 21, "") is None
+
+
+def test_a_centre_line_is_no_turn_lane() -> None:
+    # "into the center lane line" is the line between directions, not a lane entered
+    text = "drifted into the center lane line"
+    assert lane_change_side(text, 0, 7, "") is None
+
+
+def test_a_follower_changing_into_the_centre_turn_lane_changes_left() -> None:
+    s = read(
+        "The Waymo AV was stopped in a queue of traffic in the left lane. A sedan approached the Waymo AV from "
+        "behind and began to change lanes into the center turn lane, and the right side of the sedan made contact "
+        "with the rear left corner of the Waymo AV."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
+
+
+def test_a_cyclist_is_the_bicycle_it_rides() -> None:
+    named, _ = label_parties(
+        "The Waymo AV slowed for traffic when a cyclist left the bike lane, and the front of the bicycle made "
+        "contact with the rear of the Waymo AV."
+    )
+    assert "V2 left the bike lane" in named and "the front of V2 made contact" in named
+    assert "V3" not in named
+
+
+def test_a_cyclist_merging_out_of_the_bike_lane_changes_lanes_left() -> None:
+    s = read(
+        "As the Waymo AV came to a stop behind traffic, a cyclist merged out of the bike lane into the travel "
+        "lane, and the front of the bicycle made contact with the rear right corner of the Waymo AV."
+    )
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
