@@ -77,3 +77,24 @@ def test_a_cyclist_merging_out_of_the_bike_lane_changes_lanes_left() -> None:
     assert [p.id for p in s.participants] == ["V1", "V2"]
     assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
     assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+@pytest.mark.parametrize(
+    ("later", "named"),
+    [
+        # the brand alone, whatever lowercase word follows it, is the automated vehicle
+        ("the pickup struck the rear of the Acme shortly after.", "the rear of V1 shortly after"),
+        ("the Acme was struck in the rear by the pickup.", "V1 was struck"),
+    ],
+)
+def test_a_brand_said_alone_is_the_automated_vehicle(later: str, named: str) -> None:
+    text, _ = label_parties(f"The subject Acme vehicle was driving in autonomous mode when {later}")
+    assert named in text
+
+
+@pytest.mark.parametrize("noun", ["fleet", "operator", "Roadster"])
+def test_a_brand_qualifying_a_noun_or_a_model_is_not_the_vehicle(noun: str) -> None:
+    text, _ = label_parties(
+        f"The subject Acme vehicle was driving in autonomous mode when a pickup struck it. The Acme {noun} was told."
+    )
+    assert f"The Acme {noun}" in text
