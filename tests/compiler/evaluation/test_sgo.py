@@ -101,6 +101,9 @@ def test_a_backing_party_leads_with_its_rear_and_is_the_striker(
         ("Stopped", "Parking Maneuver", ("Rear Left",), {CrashType.REAR_END}, {"CP"}),
         # a passing car's side sweeps a parked one's front corner: the mover strikes, with no IR crash type
         ("Parked", "Proceeding Straight", ("Right",), set(), {"CP"}),
+        # so does its rear quarter, or a turning trailer's rear corner: it moved forward, its rear did not lead
+        ("Parked", "Passing", ("Rear Right",), set(), {"CP"}),
+        ("Stopped", "Making Right Turn", ("Rear Left",), set(), {"CP"}),
         # both moving: the front in contact is the striker's, as before
         ("Proceeding Straight", "Changing Lanes", ("Right",), {CrashType.SIDE}, {"SV"}),
         # both standing: nobody moved into the other as far as the codes say, so the areas decide, as before
