@@ -16,8 +16,9 @@ The mapping (one function per field, each saying what it cannot map):
 - pre-crash movement, compared with the party's last action before the impact: Proceeding Straight is
   follow_lane or go_across; Stopped is stop; Making Left / Right / U-Turn, Changing Lanes (and Merging),
   Entering Traffic (drive_into), Crossing into Opposing Lane and Traveling Wrong Way (retrograde), Lane /
-  Road Departure (drive_off or retrograde), Passing (follow_lane, change_lane, or retrograde: an overtake by
-  way of the opposing lane is driving in a lane of the opposite direction), a pedestrian Crossing Roadway
+  Road Departure (drive_off, retrograde, or change_lane: a drift into the next lane of its direction),
+  Passing (follow_lane, change_lane, or retrograde: an overtake by way of the opposing lane is driving in a
+  lane of the opposite direction), a pedestrian Crossing Roadway
   (cross) or Moving on Sidewalk (walk), Backing (reverse), Parked (parked, or stop: NHTSA codes a vehicle
   standing in its lane for a passenger as parked), a Parking Maneuver (reverse, drive_into or drive_off: out
   of a space or into one). Other / Unknown are not scored;
@@ -139,7 +140,10 @@ _MOVEMENT: dict[str, frozenset[ActionKind] | None] = {
     "Entering Traffic": frozenset((_K.DRIVE_INTO,)),
     "Crossing into Opposing Lane": frozenset((_K.RETROGRADE,)),
     "Traveling Wrong Way": frozenset((_K.RETROGRADE,)),
-    "Lane / Road Departure": frozenset((_K.DRIVE_OFF, _K.RETROGRADE)),
+    # leaving its lane: off the road (drive_off), into the other direction's lane (retrograde), or drifting into
+    # the next lane of its own direction, which NHTSA codes here when unintended (Changing Lanes is the intended
+    # move) and the IR, which has no intent, says as change_lane, as the rules read "drifted into V1's lane"
+    "Lane / Road Departure": frozenset((_K.DRIVE_OFF, _K.RETROGRADE, _K.CHANGE_LANE)),
     "NM Crossing Roadway": frozenset((_K.CROSS,)),
     "NM Moving on Sidewalk": frozenset((_K.WALK,)),
     "NM in Roadway - Other": frozenset((_K.WALK, _K.CROSS)),

@@ -52,6 +52,9 @@ def test_movements_map_to_actions_backing_and_parked_included() -> None:
     # an overtake through the opposing lane is driving in a lane of the opposite direction in the IR
     passing = sgo.movement(row(**{"CP Pre-Crash Movement": "Passing"}), "CP").accept
     assert passing == {ActionKind.FOLLOW_LANE, ActionKind.CHANGE_LANE, ActionKind.RETROGRADE}
+    # leaving its lane: off the road, into the other direction's, or into the next lane of its own (a drift)
+    departure = sgo.movement(row(**{"CP Pre-Crash Movement": "Lane / Road Departure"}), "CP").accept
+    assert departure == {ActionKind.DRIVE_OFF, ActionKind.RETROGRADE, ActionKind.CHANGE_LANE}
 
 
 def test_the_partner_kind_comes_from_crash_with() -> None:
