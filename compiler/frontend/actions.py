@@ -19,7 +19,8 @@ from sovarc.compiler.frontend.lanes import lane_change_side
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
-    r"\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
+    # (not a head turned to look: "his head was turned left", "with her head turning left")
+    r"(?<!\bhead )(?<!\bhead was )(?<!\bheads were )(?<!\bhead is )\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
     r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
@@ -136,11 +137,13 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.STOP,
         re.compile(
-            r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
+            # (not "nearly stopped", "came to a near stop": it was still moving)
+            r"(?<!\bnearly )(?<!\balmost )\bstopped\b"
+            r"|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick |near |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
+            r"|\bto a (?:complete |full |sudden |quick |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
             r"|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,

@@ -98,3 +98,40 @@ def test_a_brand_qualifying_a_noun_or_a_model_is_not_the_vehicle(noun: str) -> N
         f"The subject Acme vehicle was driving in autonomous mode when a pickup struck it. The Acme {noun} was told."
     )
     assert f"The Acme {noun}" in text
+
+
+@pytest.mark.parametrize(
+    "slowing",
+    ["slowed and came to a near stop", "had nearly stopped", "was almost stopped", "slowed to a near stop"],
+)
+def test_nearly_stopped_is_still_moving(slowing: str) -> None:
+    s = read(
+        f"The Waymo AV was stopped at a red light. The sedan behind the Waymo AV {slowing} when it made contact "
+        "with the rear of the Waymo AV."
+    )
+    assert [a.kind for a in actions(s, "V2")] == [ActionKind.FOLLOW_LANE]
+
+
+def test_came_to_a_stop_is_still_a_stop() -> None:
+    s = read(
+        "The Waymo AV was waiting at a red light. The sedan behind the Waymo AV came to a stop, then rolled "
+        "forward and made contact with the rear of the Waymo AV."
+    )
+    assert ActionKind.STOP in [a.kind for a in actions(s, "V2")]
+
+
+@pytest.mark.parametrize("head", ["with his head turned left", "while her head was turned left"])
+def test_a_head_turned_to_look_is_no_turn(head: str) -> None:
+    s = read(
+        f"The Waymo AV was stopped at a light. A cyclist was riding behind the Waymo AV {head}, and the cyclist "
+        "collided with the rear of the Waymo AV."
+    )
+    assert ActionKind.TURN_LEFT not in [a.kind for a in actions(s, "V2")]
+
+
+def test_a_vehicle_turned_left_still_turns() -> None:
+    s = read(
+        "The Waymo AV was stopped at a light. A cyclist ahead of the Waymo AV turned left, and the front of the "
+        "Waymo AV made contact with the cyclist."
+    )
+    assert ActionKind.TURN_LEFT in [a.kind for a in actions(s, "V2")]
