@@ -27,6 +27,7 @@ from sovarc.compiler.frontend.text import (
     describes_impact,
     first_impact,
     impact_clause,
+    own_impact,
     participants,
     prepare_report,
     sentences,
@@ -363,6 +364,8 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
     named = prepared.named
     sents = sentences(named)
     impact = first_impact(sents)
+    if prepared.note is not None and "the automated vehicle" in prepared.note:
+        impact = own_impact(sents, impact)  # a chain collision: the scenario is the automated vehicle's crash
     # A pedestrian first named after the first impact was met in a later one, which the IR does not hold.
     seen = " ".join(sents[: impact + 1]) if impact >= 0 else named
     ids = [pid for pid in participants(named) if pid.startswith("V") or re.search(rf"\b{pid}\b", seen)]

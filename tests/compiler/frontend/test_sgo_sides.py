@@ -135,3 +135,34 @@ def test_a_vehicle_turned_left_still_turns() -> None:
         "Waymo AV made contact with the cyclist."
     )
     assert ActionKind.TURN_LEFT in [a.kind for a in actions(s, "V2")]
+
+
+CHAIN = (
+    "The Waymo AV was stopped in a queue of traffic in the left lane. The sedan behind the Waymo AV began to change "
+    "lanes to the left as a pickup truck was traveling in that lane, and the left side of the sedan made contact "
+    "with the right side of the pickup truck. After that, the sedan swerved into the stationary Waymo AV, and the "
+    "front of the sedan made contact with the rear of the Waymo AV."
+)
+
+
+def test_a_chain_collision_is_read_at_the_automated_vehicles_own_impact() -> None:
+    s = read(CHAIN)
+    assert (s.crash.striker, s.crash.victim, s.crash.type.value) == ("V2", "V1", "rear_end")
+
+
+def test_a_report_numbering_its_own_vehicles_keeps_its_first_impact() -> None:
+    # the same chain in police numbering: the first impact is the crash, as NMVCCS codes it
+    s = read(
+        "V1 was stopped in a queue of traffic in the left lane. V2 behind V1 began to change lanes to the left as "
+        "V3 was traveling in that lane, and the left side of V2 made contact with the right side of V3. After "
+        "that, V2 swerved into V1, and the front of V2 made contact with the rear of V1."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V3")
+
+
+def test_a_pronoun_in_the_first_impact_may_be_the_automated_vehicle() -> None:
+    s = read(
+        "The Waymo AV was in reverse at 2 mph when it made contact with the door of a parked sedan. Later the "
+        "sedan's owner struck the Waymo AV with a cart."
+    )
+    assert s.crash.striker == "V1"
