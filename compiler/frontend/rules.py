@@ -16,7 +16,7 @@ from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import read_crash, read_crash_at
+from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
@@ -452,6 +452,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
+    crash = backed_into_follower(crash, _backing(people), named)
     crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
     environment, found = read_environment(named)
     spots += found

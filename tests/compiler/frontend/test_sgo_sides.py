@@ -166,3 +166,20 @@ def test_a_pronoun_in_the_first_impact_may_be_the_automated_vehicle() -> None:
         "sedan's owner struck the Waymo AV with a cart."
     )
     assert s.crash.striker == "V1"
+
+
+@pytest.mark.parametrize(
+    ("where", "crash"),
+    [
+        # it stood behind the one that then backed into it: rear first into its front
+        ("came to a stop behind a stopped box truck", "rear_end"),
+        # nothing says where it stood: the part met stays unknown
+        ("came to a stop near a stopped box truck", "unknown"),
+    ],
+)
+def test_one_backing_into_the_vehicle_behind_it_meets_its_front(where: str, crash: str) -> None:
+    s = read(
+        f"The Waymo AV was traveling north in the left lane and {where}. As the Waymo AV waited, the truck began "
+        "to reverse and then made contact with the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim, s.crash.type.value) == ("V2", "V1", crash)
