@@ -257,6 +257,14 @@ _PURPOSE = re.compile(
     r"(?P<what> to (?:turn|make|go|enter|change|merge|pull)\b[^.,;]*?" + _CLAUSE + ")",
     re.I,
 )
+# Why it went into the other direction's lanes ("entered the oncoming lanes to maneuver around V1"): the going
+# around is done there, in those lanes, not a second move into a lane of its own direction.
+_AROUND_BY = re.compile(
+    r"\b(?P<lead>(?:opposing|oncoming)(?: traffic| travel)? lanes?(?: of (?:\[XXX\]|[\w.]+(?: [\w.]+){0,2}))?)"
+    r"(?P<what> (?:in order )?to (?:pass|overtake|go around|get around|drive around|move around|maneuver around"
+    r"|manoeuvre around)\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
 # A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
 # preparing or being about to do something says it had not begun.
 _PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
@@ -319,6 +327,7 @@ def what_was_done(text: str) -> str:
     )
     text = _INTENDED_MOVE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
+    text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
 
 

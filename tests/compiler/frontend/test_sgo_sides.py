@@ -183,3 +183,23 @@ def test_one_backing_into_the_vehicle_behind_it_meets_its_front(where: str, cras
         "to reverse and then made contact with the Waymo AV."
     )
     assert (s.crash.striker, s.crash.victim, s.crash.type.value) == ("V2", "V1", crash)
+
+
+@pytest.mark.parametrize(
+    "into",
+    ["entered the oncoming lanes of Elm Street", "crossed into the opposing lane", "moved into the oncoming lane"],
+)
+def test_going_around_by_the_other_directions_lanes_is_one_move_there(into: str) -> None:
+    s = read(
+        f"The Waymo AV was stopped in traffic. A sedan behind the Waymo AV {into} to maneuver around the Waymo AV, "
+        "and the right side of the sedan made contact with the rear left corner of the Waymo AV."
+    )
+    assert [a.kind for a in actions(s, "V2")][-1] is ActionKind.RETROGRADE
+
+
+def test_going_around_said_alone_is_still_a_lane_change() -> None:
+    s = read(
+        "The Waymo AV was stopped in traffic. A sedan behind the Waymo AV maneuvered around the left side of the "
+        "Waymo AV, and the right side of the sedan made contact with the rear left corner of the Waymo AV."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
