@@ -16,8 +16,9 @@ The mapping (one function per field, each saying what it cannot map):
 - pre-crash movement, compared with the party's last action before the impact: Proceeding Straight is
   follow_lane or go_across; Stopped is stop; Making Left / Right / U-Turn, Changing Lanes (and Merging),
   Entering Traffic (drive_into), Crossing into Opposing Lane and Traveling Wrong Way (retrograde), Lane /
-  Road Departure (drive_off or retrograde), Passing (follow_lane, change_lane, or retrograde: an overtake by
-  way of the opposing lane is driving in a lane of the opposite direction), a pedestrian Crossing Roadway
+  Road Departure (drive_off, retrograde, or change_lane: a drift into the next lane of its direction),
+  Passing (follow_lane, change_lane, or retrograde: an overtake by way of the opposing lane is driving in a
+  lane of the opposite direction), a pedestrian Crossing Roadway
   (cross) or Moving on Sidewalk (walk), Backing (reverse), Parked (parked, or stop: NHTSA codes a vehicle
   standing in its lane for a passenger as parked), a Parking Maneuver (reverse, drive_into or drive_off: out
   of a space or into one). Other / Unknown are not scored;
@@ -26,7 +27,8 @@ The mapping (one function per field, each saying what it cannot map):
   contact when the other's is not; the crash type is the other's part (rear: rear_end, side: side), and
   front to front is frontal with no striker scored. A party backing leads with its rear: its rear against
   the other's front is rear_end, against the other's side is side, and it is the striker. A party coded
-  Stopped or Parked strikes nobody when the other moved: the mover is the striker (see `_standing_struck`);
+  Stopped or Parked strikes nobody when the other moved: the mover is the striker; the mover's rear against
+  the standing front is rear_end only when its move can lead with the rear (see `_standing_struck`);
 - the crash partner's kind, from "Crash With": Passenger Car and SUV are car, Pickup Truck pickup, Van van,
   Bus bus, Heavy Truck truck, Motorcycle motorcycle, Non-Motorist: Cyclist bicycle; the others (a
   pedestrian, a first responder's vehicle of any kind) are not scored.
@@ -138,7 +140,10 @@ _MOVEMENT: dict[str, frozenset[ActionKind] | None] = {
     "Entering Traffic": frozenset((_K.DRIVE_INTO,)),
     "Crossing into Opposing Lane": frozenset((_K.RETROGRADE,)),
     "Traveling Wrong Way": frozenset((_K.RETROGRADE,)),
-    "Lane / Road Departure": frozenset((_K.DRIVE_OFF, _K.RETROGRADE)),
+    # leaving its lane: off the road (drive_off), into the other direction's lane (retrograde), or drifting into
+    # the next lane of its own direction, which NHTSA codes here when unintended (Changing Lanes is the intended
+    # move) and the IR, which has no intent, says as change_lane, as the rules read "drifted into V1's lane"
+    "Lane / Road Departure": frozenset((_K.DRIVE_OFF, _K.RETROGRADE, _K.CHANGE_LANE)),
     "NM Crossing Roadway": frozenset((_K.CROSS,)),
     "NM Moving on Sidewalk": frozenset((_K.WALK,)),
     "NM in Roadway - Other": frozenset((_K.WALK, _K.CROSS)),
@@ -158,6 +163,8 @@ _PARTNER_KIND = {
     "Motorcycle": VehicleKind.MOTORCYCLE,
     "Non-Motorist: Cyclist": VehicleKind.BICYCLE,
 }
+# Coded moves that can lead with the rear besides Backing: parking into a space backwards.
+_REAR_LEADS = frozenset(("Parking Maneuver",))
 _FRONT = ("Front", "Front Left", "Front Right")
 _REAR = ("Rear", "Rear Left", "Rear Right")
 _SIDE = ("Left", "Right")
@@ -226,10 +233,13 @@ def _backing(row: dict[str, str]) -> tuple[Expected, Expected]:
 def _standing_struck(row: dict[str, str], striker: str) -> tuple[Expected, Expected] | None:
     """The party whose front the areas put in contact stood still (Stopped or Parked) while the other moved:
     the IR's striker is the one that moved into the other, so it is the mover, whatever part of the standing
-    party it touched. The mover's rear against the standing front is a reversing striker's rear_end; its side
-    against that front (a passing car's side sweeping a stopped car's front corner) is no crash type of the
-    IR, whose types are a striker's leading face meeting the victim, so it is not expressible. None when the
-    rule does not apply."""
+    party it touched. The mover's rear against the standing front is a reversing striker's rear_end when its
+    coded move can lead with the rear (a Parking Maneuver: into a space backwards; Backing is read before,
+    see `_backing`). Its side against that front (a passing car's side sweeping a stopped car's front corner),
+    or the rear of one coded moving forward (a turning truck's trailer swinging its rear corner into a stopped
+    car's front, a passing car's rear quarter clipping it), is no crash type of the IR, whose types are a
+    striker's leading face meeting the victim: neither party led into the other, so it is not expressible.
+    None when the rule does not apply."""
     mover = "CP" if striker == "SV" else "SV"
     standing = ("Stopped", "Parked")
     if row.get(f"{striker} Pre-Crash Movement") not in standing:
@@ -237,7 +247,14 @@ def _standing_struck(row: dict[str, str], striker: str) -> tuple[Expected, Expec
     if row.get(f"{mover} Pre-Crash Movement") not in _MOVEMENT or row.get(f"{mover} Pre-Crash Movement") in standing:
         return None  # the other stood too, or what it did is not coded
     part = _part(_areas(row, mover))
-    kind = Expected(frozenset((CrashType.REAR_END,))) if part == "rear" else _INEXPRESSIBLE if part else _SKIP
+    reversing = row.get(f"{mover} Pre-Crash Movement") in _REAR_LEADS
+    kind = (
+        Expected(frozenset((CrashType.REAR_END,)))
+        if part == "rear" and reversing
+        else _SKIP
+        if not part
+        else _INEXPRESSIBLE
+    )
     return kind, Expected(frozenset((mover,)))
 
 

@@ -19,7 +19,8 @@ from sovarc.compiler.frontend.lanes import lane_change_side
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
-    r"\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
+    # (not a head turned to look: "his head was turned left", "with her head turning left")
+    r"(?<!\bhead )(?<!\bhead was )(?<!\bheads were )(?<!\bhead is )\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
     r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
@@ -136,11 +137,13 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.STOP,
         re.compile(
-            r"\bstopped\b|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
+            # (not "nearly stopped", "came to a near stop": it was still moving)
+            r"(?<!\bnearly )(?<!\balmost )\bstopped\b"
+            r"|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
             r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
             r"|\bstationary\b|\bat a standstill\b|\bstopping\b"
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick |near |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
+            r"|\bto a (?:complete |full |sudden |quick |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
             r"|\bidling\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
@@ -254,6 +257,14 @@ _PURPOSE = re.compile(
     r"(?P<what> to (?:turn|make|go|enter|change|merge|pull)\b[^.,;]*?" + _CLAUSE + ")",
     re.I,
 )
+# Why it went into the other direction's lanes ("entered the oncoming lanes to maneuver around V1"): the going
+# around is done there, in those lanes, not a second move into a lane of its own direction.
+_AROUND_BY = re.compile(
+    r"\b(?P<lead>(?:opposing|oncoming)(?: traffic| travel)? lanes?(?: of (?:\[XXX\]|[\w.]+(?: [\w.]+){0,2}))?)"
+    r"(?P<what> (?:in order )?to (?:pass|overtake|go around|get around|drive around|move around|maneuver around"
+    r"|manoeuvre around)\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
 # A plan ("intending to", "planned to", "wanted to") is carried out unless the report shows otherwise; waiting,
 # preparing or being about to do something says it had not begun.
 _PLAN = re.compile(r"^(?:intend|plan|want|was going|were going)", re.I)
@@ -316,6 +327,7 @@ def what_was_done(text: str) -> str:
     )
     text = _INTENDED_MOVE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
+    text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
 
 

@@ -10,9 +10,10 @@ the victim's part: its side (side), its rear (rear_end) or its front (frontal).
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 from sovarc.compiler.frontend.clauses import is_object
-from sovarc.dsl.ir import Crash, CrashType
+from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
 _WORD = (
@@ -337,3 +338,20 @@ def read_crash_at(
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:
         return Crash(CrashType.FRONTAL), said
     return Crash(), -1
+
+
+def backed_into_follower(crash: Crash, backing: frozenset[str], text: str) -> Crash:
+    """A vehicle backing into one the report puts behind it ("V1 came to a stop behind V2 ... V2 began to reverse
+    and made contact with V1") met it rear first, and met its front: with no part named, that is the IR's
+    `rear_end` of a backing striker (see `_backed`), as the follower struck from behind is one going forward."""
+    striker, victim = crash.striker, crash.victim
+    if crash.type is not UNKNOWN or not isinstance(striker, str) or not isinstance(victim, str):
+        return crash
+    if striker not in backing or victim in backing:
+        return crash
+    behind = re.compile(
+        rf"\b{victim}\b[^.;]*?\bbehind (?:the |a )?{_STATE}{striker}\b"
+        rf"|\b{striker}\b[^.;]*?\b(?:in front of|ahead of) (?:the )?{_STATE}{victim}\b",
+        re.I,
+    )
+    return replace(crash, type=CrashType.REAR_END) if behind.search(text) else crash

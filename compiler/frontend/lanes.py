@@ -87,6 +87,15 @@ _TARGETS = (
     # "around the passenger side of V1": in a car driven from the left, the driver's side is its left
     re.compile(r"\baround (?:the )?(driver|passenger)(?:'?s'?)?[- ]side\b", re.I),
 )
+# Lanes whose side of the road is fixed by what they are for, in right-hand traffic: a centre turn lane (a two-way
+# left-turn lane) lies left of every travel lane of either direction, so entering it is a move left; a bike lane
+# runs along the right edge, so leaving it for a travel lane is one too.
+_LEFT_BY_USE = re.compile(
+    r"\b(?:in)?to (?:the |an? )?(?:(?:cent(?:er|re)|middle)(?: shared| two-way)?(?: left)?|two-way left)"
+    r"(?:[- ]turn)? lane\b(?! line)"
+    r"|\b(?:out of|from) (?:the |an? |its )?(?:bike|bicycle|cycle) lane\b",
+    re.I,
+)
 _CAR_SIDE = {"driver": "left", "passenger": "right"}
 _ORIGIN = re.compile(
     r"\b(?:in|from|within) (?:the |its )?(?:adjacent )?" + _SIDE + r"\b(?:[- ](?:adjacent|travel|through|\w+bound))*"
@@ -108,5 +117,7 @@ def lane_change_side(text: str, start: int, end: int, said_before: str) -> str |
         if m := pattern.search(window):
             side = next(g for g in m.groups() if g).lower()
             return _CAR_SIDE.get(side, side)
+    if _LEFT_BY_USE.search(window):
+        return "left"
     origins = [m.group(1).lower() for m in _ORIGIN.finditer(said_before + " " + window)]
     return _OTHER_SIDE[origins[-1]] if origins else None

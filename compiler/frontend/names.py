@@ -48,6 +48,11 @@ _AV = re.compile(
 _BRAND = re.compile(
     r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
 )
+# Nouns a brand qualifies when it is not the vehicle: "the Zoox fleet", "the Waymo operator".
+_BRAND_OF = (
+    r"vehicles?|cars?|trucks?|shuttles?|bus(?:es)?|fleet|system|software|drivers?|operators?|employees?|staff|team"
+    r"|technicians?|dealer\w*|depot|facility|app|rider|passengers?|specialists?|personnel"
+)
 _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b|\bmanual mode\b", re.I)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
@@ -135,14 +140,28 @@ def _automated(text: str) -> tuple[str, str] | None:
             "V1",
             text,
         )
-        # and the brand alone, once said with it: "the Mercedes-Benz vehicle ... the Mercedes-Benz"
-        text = re.sub(r"\b[Tt]he " + re.escape(brand.group(1)) + r"\b(?![\w-])(?! [A-Za-z])", "V1", text)
+        # and the brand alone, once said with it: "the Mercedes-Benz vehicle ... the Mercedes-Benz", whatever
+        # word follows ("the rear of the Mercedes-Benz approximately 10 seconds later"), unless it is a noun the
+        # brand qualifies ("the Zoox fleet", "the Zoox operator") or a model's name
+        text = re.sub(
+            r"\b[Tt]he " + re.escape(brand.group(1)) + r"\b(?![\w-])(?! (?:[A-Z][\w-]*|" + _BRAND_OF + r")\b)",
+            "V1",
+            text,
+        )
     text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
     return text, said
 
 
-# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle".
-_SAME = {"passenger vehicle": "passenger car", "pick-up truck": "pickup truck", "sport utility vehicle": "suv"}
+# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle"; a cyclist is later
+# "the bicycle" it rides (the IR holds the rider and the bicycle as one vehicle).
+_SAME = {
+    "passenger vehicle": "passenger car",
+    "pick-up truck": "pickup truck",
+    "sport utility vehicle": "suv",
+    "bicycle": "cyclist",
+    "bicyclist": "cyclist",
+    "pedalcyclist": "cyclist",
+}
 _SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Following)\b[^,]*, ", re.I)
 
 

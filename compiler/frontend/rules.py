@@ -16,7 +16,7 @@ from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import read_crash, read_crash_at
+from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
@@ -27,6 +27,7 @@ from sovarc.compiler.frontend.text import (
     describes_impact,
     first_impact,
     impact_clause,
+    own_impact,
     participants,
     prepare_report,
     sentences,
@@ -363,6 +364,8 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
     named = prepared.named
     sents = sentences(named)
     impact = first_impact(sents)
+    if prepared.note is not None and "the automated vehicle" in prepared.note:
+        impact = own_impact(sents, impact)  # a chain collision: the scenario is the automated vehicle's crash
     # A pedestrian first named after the first impact was met in a later one, which the IR does not hold.
     seen = " ".join(sents[: impact + 1]) if impact >= 0 else named
     ids = [pid for pid in participants(named) if pid.startswith("V") or re.search(rf"\b{pid}\b", seen)]
@@ -449,6 +452,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
+    crash = backed_into_follower(crash, _backing(people), named)
     crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
     environment, found = read_environment(named)
     spots += found

@@ -205,6 +205,18 @@ def first_impact(sents: list[str]) -> int:
     return (described or found or [-1])[0]
 
 
+def own_impact(sents: list[str], impact: int) -> int:
+    """The automated vehicle's impact in a chain collision, for a report whose V1 is that vehicle: when the first
+    impact (index `impact`) is between two other road users ("the SUV made contact with the pickup truck. After
+    that, the SUV swerved into V1"), the first later sentence whose impact clause names V1, for the scenario is
+    V1's crash; else `impact`. A pronoun in the impact clause may be V1 ("when it made contact with V2"): then
+    the impact stays."""
+    if impact < 0 or re.search(r"\bV1\b|\b(?:it|its|they|them)\b", impact_clause(sents[impact]), re.I):
+        return impact
+    later = (i for i in range(impact + 1, len(sents)) if describes_impact(sents[i]))
+    return next((i for i in later if re.search(r"\bV1\b", impact_clause(sents[i]))), impact)
+
+
 def up_to_first_impact(sents: list[str]) -> list[str]:
     """The sentences up to and including the first one that describes an impact."""
     i = first_impact(sents)

@@ -52,6 +52,9 @@ def test_movements_map_to_actions_backing_and_parked_included() -> None:
     # an overtake through the opposing lane is driving in a lane of the opposite direction in the IR
     passing = sgo.movement(row(**{"CP Pre-Crash Movement": "Passing"}), "CP").accept
     assert passing == {ActionKind.FOLLOW_LANE, ActionKind.CHANGE_LANE, ActionKind.RETROGRADE}
+    # leaving its lane: off the road, into the other direction's, or into the next lane of its own (a drift)
+    departure = sgo.movement(row(**{"CP Pre-Crash Movement": "Lane / Road Departure"}), "CP").accept
+    assert departure == {ActionKind.DRIVE_OFF, ActionKind.RETROGRADE, ActionKind.CHANGE_LANE}
 
 
 def test_the_partner_kind_comes_from_crash_with() -> None:
@@ -101,6 +104,9 @@ def test_a_backing_party_leads_with_its_rear_and_is_the_striker(
         ("Stopped", "Parking Maneuver", ("Rear Left",), {CrashType.REAR_END}, {"CP"}),
         # a passing car's side sweeps a parked one's front corner: the mover strikes, with no IR crash type
         ("Parked", "Proceeding Straight", ("Right",), set(), {"CP"}),
+        # so does its rear quarter, or a turning trailer's rear corner: it moved forward, its rear did not lead
+        ("Parked", "Passing", ("Rear Right",), set(), {"CP"}),
+        ("Stopped", "Making Right Turn", ("Rear Left",), set(), {"CP"}),
         # both moving: the front in contact is the striker's, as before
         ("Proceeding Straight", "Changing Lanes", ("Right",), {CrashType.SIDE}, {"SV"}),
         # both standing: nobody moved into the other as far as the codes say, so the areas decide, as before
