@@ -350,6 +350,12 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
+def _left_road_to_strike(people: list[Participant], striker: str | Unknown | None) -> bool:
+    """Whether the striker's last move before the impact took it off the road."""
+    p = next((p for p in people if p.id == striker), None)
+    return p is not None and isinstance(p.actions, tuple) and p.actions[-1:] == (Action(ActionKind.DRIVE_OFF),)
+
+
 def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     """The actions up to the last stop, or with a stop added."""
     stops = [i for i, a in enumerate(actions) if a.kind in (ActionKind.STOP, ActionKind.PARKED)]
@@ -415,6 +421,10 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
             walked = next((p for p in early if _WALKING.search(p.text)), None)
             crossed = next((p for p in early if _CROSSING.search(p.text)), None)
             walking = walked is not None and crossed is None
+            if walked is None and crossed is None and _left_road_to_strike(people, crash.striker):
+                # met where its striker had left the road: not crossing it, and how it moved is not said
+                people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, speed, UNKNOWN))
+                continue
             action = Action(ActionKind.WALK if walking else ActionKind.CROSS)
             people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, speed, (action,)))
             if (piece := walked if walking else crossed) is not None:

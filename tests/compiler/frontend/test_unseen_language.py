@@ -90,3 +90,25 @@ def test_the_victims_part_as_subject_of_a_passive_strike_gives_the_crash_type(cl
 def test_a_vehicle_stopped_inside_a_junction_drove_into_it_first(said: str, acts: list[str]) -> None:
     text = CROSS + said + " V2 was traveling south. The front of V2 struck the right side of V1."
     assert _actions(text)["V1"] == acts
+
+
+@pytest.mark.parametrize(
+    ("said", "ids"),
+    [
+        ("V1 struck three pedestrians.", ["V1", "P1", "P2", "P3"]),
+        ("V1 struck two pedestrians standing at the corner.", ["V1", "P1", "P2"]),
+        ("V1 struck a pedestrian.", ["V1", "P1"]),
+    ],
+)
+def test_a_group_of_pedestrians_counted_in_words_is_that_many_road_users(said: str, ids: list[str]) -> None:
+    text = ROAD + "V1 was traveling east. " + said
+    assert [p.id for p in extract(text, "t").participants] == ids
+
+
+def test_a_pedestrian_met_after_its_striker_left_the_road_was_not_crossing_it() -> None:
+    off = ROAD + "V1 was traveling east. V1 traveled off the right side of the road and struck a pedestrian."
+    assert _actions(off) == {"V1": ["follow_lane", "drive_off"], "P1": []}  # [] = unknown
+    on = ROAD + "V1 was traveling east and struck a pedestrian."
+    assert _actions(on)["P1"] == ["cross"]  # on the road, one struck is taken to be crossing it
+    walking = ROAD + "V1 traveled off the right side of the road and struck a pedestrian walking along the shoulder."
+    assert _actions(walking)["P1"] == ["walk"]  # what it did, when said, stands
