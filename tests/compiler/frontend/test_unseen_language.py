@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend.rules import extract
-from sovarc.dsl.ir import CrashType, Side, Unknown
+from sovarc.dsl.ir import CrashType, Lighting, Side, Speed, SpeedUnit, Unknown
 
 CROSS = "The crash occurred at a four-leg intersection. "
 ROAD = "The crash occurred on a straight road with three lanes in each direction. "
@@ -112,3 +112,33 @@ def test_a_pedestrian_met_after_its_striker_left_the_road_was_not_crossing_it() 
     assert _actions(on)["P1"] == ["cross"]  # on the road, one struck is taken to be crossing it
     walking = ROAD + "V1 traveled off the right side of the road and struck a pedestrian walking along the shoulder."
     assert _actions(walking)["P1"] == ["walk"]  # what it did, when said, stands
+
+
+@pytest.mark.parametrize(
+    ("said", "heading"),
+    [
+        ("V1 was making a left turn to travel east after being stopped for a stop sign.", "south"),
+        ("V1 made a right turn to travel east.", "north"),
+        ("V1 turned left to go northbound.", "east"),
+        ("V1 was traveling west and made a left turn to travel south.", "west"),  # said outright, it stands
+    ],
+)
+def test_a_turn_said_with_the_way_it_led_gives_the_heading_before_it(said: str, heading: str) -> None:
+    text = CROSS + said + " V2 was traveling west. The front of V2 struck the left side of V1."
+    v1 = next(p for p in extract(text, "t").participants if p.id == "V1")
+    assert str(v1.heading) == heading
+
+
+def test_road_facts_in_other_words() -> None:
+    s = extract(
+        "The crash occurred on a highway. The highway is designated 104 kmph (65 mph). The area was dark but lit."
+        " The east/west roadway has five lanes; each direction consists of two through lanes and a left turn lane."
+        " V1 was traveling east. The front of V1 struck the rear of V2.",
+        "t",
+    )
+    assert s.road.speed_limit == Speed(104, SpeedUnit.KMH)
+    assert set(s.environment.lighting) == {Lighting.DARK, Lighting.STREET_LIGHTS}
+    assert s.road.lanes == 5
+    # a count after another noun is not the road's: "the driver has two lanes of experience" says nothing
+    other = extract("V1 was traveling east on a road. The driver has five lanes memorised. V1 struck V2.", "t")
+    assert isinstance(other.road.lanes, Unknown)
