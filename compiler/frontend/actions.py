@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.clauses import Piece
-from sovarc.compiler.frontend.lanes import lane_change_side
+from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
@@ -71,6 +71,18 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b"
             r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
             r"(?:the|an?) (?:\w+ ){0,2}lane\b",
+            re.I,
+        ),
+    ),
+    # Sideways into a lane named by its number: "veered to the right crossing over lane two into lane one",
+    # "moved into the number two lane". Reports number the lanes of one direction, so a numbered lane
+    # (with no other direction named) is a lane of its own road side: a lane change.
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:mov|merg|swerv|steer|veer|drift|cross|chang|pull|cut)\w*\b[^.;]{0,50}?\b(?:in)?to (?:the )?"
+            r"(?:number " + NUMBER + r"[- ]lane|lane (?:number |#)?" + NUMBER + r")\b"
+            r"(?! (?:of )?(?:the )?(?:north|south|east|west)bound)",
             re.I,
         ),
     ),
@@ -306,6 +318,9 @@ _COMPASS_WORD = re.compile(r"\b(?:north|south|east|west)(?:bound|ward)?\b", re.I
 _MOVING_STRIKER = re.compile(
     r"\bfollow(?:ing|ed)\b|\bfrom behind\b|\bbehind\b|\bpass(?:ed|ing)\b|\bcontinued forward\b", re.I
 )
+_STOPPED_INSIDE = re.compile(
+    r"\bstopped (?:\w+ ){0,3}?in (?:the )?(?:middle of (?:the )?)?(?:intersection|junction)\b", re.I
+)
 _JUNCTION = re.compile(r"\bintersect|\bjunction\b|\bcross street\b", re.I)
 _STANDING = (ActionKind.STOP, ActionKind.DRIVE_INTO, ActionKind.PARKED)
 _TURNING = (ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.U_TURN)
@@ -523,8 +538,12 @@ def read_actions_at(
     # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
     # one the report shows moving before it stopped drove first.
     moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
+    # So did one stopped inside a junction: it drove in to stop there ("after being stopped in the
+    # intersection"), unlike one stopped at it (at the light, the stop sign).
     moved_first = (
-        bool(ordered) and ordered[0].kind is ActionKind.STOP and moving_at is not None and moving_at < found[0][0]
+        bool(ordered)
+        and ordered[0].kind is ActionKind.STOP
+        and ((moving_at is not None and moving_at < found[0][0]) or any(_STOPPED_INSIDE.search(p.text) for p in pieces))
     )
     # One first shown in the act of a turn ("V2 was a Lincoln that attempted to make a left turn"), with no
     # motion or heading said before it, is not shown driving along its lane first. A lane change is: it is made

@@ -297,8 +297,13 @@ def _backed(part: CrashType, backing: bool) -> CrashType:
 
 
 def _said_part(sentence: str) -> CrashType | None:
-    """The victim's part said without naming it again: "it was struck in the right side by the front of V2"."""
+    """The victim's part said without naming it again: "it was struck in the right side by the front of V2",
+    or as the subject of the passive strike, its owner the clause before: "V1 turned left and the right side
+    was struck by the front of V2"."""
     m = re.search(r"\b(?:struck|hit|impacted|contacted) (?:in|on) (?:the |its )?(" + _PART + r")\b", sentence, re.I)
+    m = m or re.search(
+        r"\b(?:the|its) (" + _PART + r") (?:was|were) (?:\w+ly )?(?:struck|hit|impacted|contacted)\b", sentence, re.I
+    )
     return _kind(m.group(1)) if m else None
 
 

@@ -103,6 +103,22 @@ _ORIGIN = re.compile(
     re.I,
 )
 _OTHER_SIDE = {"left": "right", "right": "left"}
+# A lane named by its number: reports count the lanes of one direction from the right ("lane one", "the number
+# one lane" is the rightmost), so from a higher number to a lower one is a move to the right.
+NUMBER = r"(?:\d|one|two|three|four|five|six)"
+_NUMBERED = r"(?:number (" + NUMBER + r")[- ]lane|lane (?:number |#)?(" + NUMBER + r"))\b"
+_INTO_NUMBERED = re.compile(r"\b(?:in)?to (?:the )?" + _NUMBERED, re.I)
+_IN_NUMBERED = re.compile(r"\b(?:in|from|within) (?:the )?" + _NUMBERED, re.I)
+
+
+def _numbered_side(window: str, said_before: str) -> str | None:
+    """The side of a move from the numbered lane it was in to the numbered lane it entered, if both are said."""
+    into = _INTO_NUMBERED.search(window)
+    origins = list(_IN_NUMBERED.finditer(said_before))
+    if into is None or not origins:
+        return None
+    went, was = (_number(next(g for g in m.groups() if g)) for m in (into, origins[-1]))
+    return None if went == was else ("right" if went < was else "left")
 
 
 def lane_change_side(text: str, start: int, end: int, said_before: str) -> str | None:
@@ -120,4 +136,4 @@ def lane_change_side(text: str, start: int, end: int, said_before: str) -> str |
     if _LEFT_BY_USE.search(window):
         return "left"
     origins = [m.group(1).lower() for m in _ORIGIN.finditer(said_before + " " + window)]
-    return _OTHER_SIDE[origins[-1]] if origins else None
+    return _OTHER_SIDE[origins[-1]] if origins else _numbered_side(window, said_before)

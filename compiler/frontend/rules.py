@@ -73,7 +73,7 @@ _DARK = (
 )
 # Dawn and dusk: the sun at or just below the horizon (twilight), neither day nor night.
 _TWILIGHT = r"\bdusk\b|\bdawn\b|\btwilight\b|\bsunset\b|\bsunrise\b|\bdaybreak\b"
-_LIT = r"\b(?:dark,? but lighted|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
+_LIT = r"\b(?:dark,? but (?:lighted|lit)|lighted|street ?lights?|street lamps?|lit by|illuminated|dark with lights)\b"
 _DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
 _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
 
@@ -133,7 +133,7 @@ def read_speed_limit(text: str) -> tuple[Speed | Unknown, int]:
     a ramp, a school zone), the lowest, as the ground truth has it."""
     limits: list[tuple[Speed, int]] = []
     for i, sentence in enumerate(sentences(text)):
-        if re.search(r"speed limits?|posted|limit", sentence, re.IGNORECASE):
+        if re.search(r"speed limits?|posted|limit|designated", sentence, re.IGNORECASE):  # "designated 104 kmph"
             found = [(int(v), u.lower()) for v, u in _SPEED.findall(sentence)]
             metric = [Speed(v, SpeedUnit.KMH) for v, u in found if u != "mph"]
             limits += [(limit, i) for limit in metric or [Speed(v, SpeedUnit.MPH) for v, u in found]]
@@ -160,6 +160,13 @@ def read_lanes(text: str) -> tuple[int | Unknown, tuple[int, int] | None]:
             tail,
         ):
             counts.append((_number(m.group(1)), (m.start(), m.end() + t.end())))
+        # the road said before the count: "the east/west roadway has five lanes", "the approach consists of"
+        elif b := re.search(
+            r"\b(?:road(?:way)?|street|highway|approach|avenue)\b[^.;]{0,40}?\b(?:has|had|have|consists? of"
+            r"|consisted of) $",
+            low[max(0, m.start() - 60) : m.start()],
+        ):
+            counts.append((_number(m.group(1)), (m.start() - (min(60, m.start()) - b.start()), m.end())))
     if not counts:
         return UNKNOWN, None
     return max(counts, key=lambda c: c[0])
@@ -222,6 +229,26 @@ def _heading(pieces: list[Piece], after_impact: bool = False) -> tuple[Heading |
                 if after_impact and re.search(r"\brest\b", text[max(0, m.start() - 20) : m.start()]):
                     continue
                 return Heading(m.group(1).lower()), piece, m.start()
+    return UNKNOWN, None, 0
+
+
+# A turn said with where it led ("making a left turn to travel east"): a left turn ends a quarter turn
+# anticlockwise of where the vehicle was heading, a right turn clockwise; so it was heading the other way round.
+_TURN_TO = re.compile(
+    r"\b(?:(left|right)[- ]turn|turn(?:ed|ing|s)? (left|right))\b[^.;]{0,30}?\bto (?:travel|go|head|proceed)"
+    r"(?: \w+)? " + _COMPASS,
+    re.I,
+)
+_QUARTER = ["north", "east", "south", "west"]  # clockwise
+
+
+def _heading_before_turn(pieces: list[Piece]) -> tuple[Heading | Unknown, Piece | None, int]:
+    """The heading before a turn said with the way it led (see above), when no heading is said outright."""
+    for piece in pieces:
+        if m := _TURN_TO.search(what_was_done(piece.text)):
+            after = _QUARTER.index(m.group(3).lower())
+            before = _QUARTER[(after + (1 if (m.group(1) or m.group(2)).lower() == "left" else -1)) % 4]
+            return Heading(before), piece, m.start()
     return UNKNOWN, None, 0
 
 
@@ -351,6 +378,12 @@ _WALKING = re.compile(
 _CROSSING = re.compile(r"\bcross|\bacross\b|\bin(?:to)? the crosswalk\b|\bfrom (?:the )?(?:left|right)\b", re.I)
 
 
+def _left_road_to_strike(people: list[Participant], striker: str | Unknown | None) -> bool:
+    """Whether the striker's last move before the impact took it off the road."""
+    p = next((p for p in people if p.id == striker), None)
+    return p is not None and isinstance(p.actions, tuple) and p.actions[-1:] == (Action(ActionKind.DRIVE_OFF),)
+
+
 def _ending_stopped(actions: tuple[Action, ...]) -> tuple[Action, ...]:
     """The actions up to the last stop, or with a stop added."""
     stops = [i for i, a in enumerate(actions) if a.kind in (ActionKind.STOP, ActionKind.PARKED)]
@@ -406,6 +439,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         clauses[pid] = early
         heading, said, at = _heading(early)
         heading, said, at = _heading(late, after_impact=True) if isinstance(heading, Unknown) else (heading, said, at)
+        heading, said, at = _heading_before_turn(early) if isinstance(heading, Unknown) else (heading, said, at)
         each_way = per_direction(" ".join(p.text for p in early), named, lanes, kind is RoadKind.STRAIGHT)
         lane, where = _lane_of(early, lanes, each_way)
         lane, where = _lane_of(late, lanes, each_way) if isinstance(lane, Unknown) else (lane, where)
@@ -418,6 +452,10 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
             walked = next((p for p in early if _WALKING.search(p.text)), None)
             crossed = next((p for p in early if _CROSSING.search(p.text)), None)
             walking = walked is not None and crossed is None
+            if walked is None and crossed is None and _left_road_to_strike(people, crash.striker):
+                # met where its striker had left the road: not crossing it, and how it moved is not said
+                people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, speed, UNKNOWN))
+                continue
             action = Action(ActionKind.WALK if walking else ActionKind.CROSS)
             people.append(Participant(pid, Role.PEDESTRIAN, heading, lane, speed, (action,)))
             if (piece := walked if walking else crossed) is not None:

@@ -20,6 +20,8 @@ _VEHICLE = re.compile(
     re.IGNORECASE,
 )
 _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
+# A group of pedestrians counted, not numbered: "struck three pedestrians" is three road users.
+_PEDESTRIAN_GROUP = re.compile(r"\b(two|three|four|five) pedestrians\b", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
 _IMPACT = re.compile(
@@ -45,7 +47,14 @@ def normalize_names(text: str) -> str:
     def pedestrian(m: re.Match[str]) -> str:
         return f"P{m.group(2) or 1}"
 
-    return _number_cyclist(_PEDESTRIAN.sub(pedestrian, number_vehicles(text)))
+    def group(m: re.Match[str]) -> str:
+        ids = [f"P{n}" for n in range(1, _NUMBER_WORDS[m.group(1).lower()] + 1)]
+        return " and ".join(ids)  # (no commas: a comma parts the clauses of an impact sentence)
+
+    text = number_vehicles(text)
+    if not re.search(r"\bpedestrian\s*#?\s*\d", text, re.I):  # (a report that numbers them says who is who)
+        text = _PEDESTRIAN_GROUP.sub(group, text, count=1)
+    return _number_cyclist(_PEDESTRIAN.sub(pedestrian, text))
 
 
 def _number_cyclist(text: str) -> str:

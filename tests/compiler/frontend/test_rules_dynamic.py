@@ -257,7 +257,8 @@ def test_a_pedestrian_crossing_is_struck_from_the_side() -> None:
     [
         ("V1, a 2003 Ford, was in its northbound lane traveling south. V1 hit V2.", "south"),
         ("V1 was stopped facing north, waiting to turn left to go west. V2 struck V1.", "north"),
-        ("V1 stopped at the sign, then turned left to travel westbound. V2 struck V1.", "unknown"),
+        # the destination is not the heading (not west); a left turn to it says where it came from
+        ("V1 stopped at the sign, then turned left to travel westbound. V2 struck V1.", "north"),
         ("The road has two westbound and two eastbound lanes. V1 was in the left lane. V2 struck V1.", "unknown"),
         ("V1 was traveling northwest on the county road. V2 struck V1.", "north"),
     ],
