@@ -27,6 +27,11 @@ from sovarc.dsl.ir import ActionKind, Side
 
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
 DRIVEWAY = 8.0  # m of driveway before (or after) the curve
+# m sideways a driveway turn's corner reaches: a quarter turn of about 10 m mean radius (some
+# 18 km/h at the planned 2.5 m/s^2 sideways), as across a road of one lane each way. Across a wider
+# road the car turns the same corner and drives on straight over the rest: a corner as wide as the
+# road would cross its own lane at a shallow angle, still facing along it, as no driver turns.
+CORNER_REACH = 11.25
 SWING_MARGIN = 0.15  # m kept in hand when a long body's rear swings out in a lane change
 OPEN_SLACK = 0.5  # m: an open median measured here may exceed the site's (sampled every 2 m) by this
 
@@ -301,16 +306,19 @@ class Drive:
         """Turn off the road into a driveway or side road on `side`."""
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, self.against)
-        forward = lateral * 0.8
+        reach = min(lateral, CORNER_REACH)
+        forward = reach * 0.8
         d, n = heading_vector(heading), heading_vector(heading + turn)
         p0 = self.line.point(at)
-        p1 = (p0[0] + forward * d[0] + lateral * n[0], p0[1] + forward * d[1] + lateral * n[1])
-        curve = bezier(p0, heading, p1, heading + turn)
+        corner = (p0[0] + forward * d[0] + reach * n[0], p0[1] + forward * d[1] + reach * n[1])
+        curve = bezier(p0, heading, corner, heading + turn)
+        p1 = (corner[0] + (lateral - reach) * n[0], corner[1] + (lateral - reach) * n[1])
+        across = [Polyline([corner, p1])] if lateral > reach else []  # straight over the rest of the road
         tail_end = (p1[0] + DRIVEWAY * n[0], p1[1] + DRIVEWAY * n[1])
         head = self.line.sub(0.0, at)
-        self.line = concat([head, curve, Polyline([p1, tail_end])])
+        self.line = concat([head, curve, *across, Polyline([p1, tail_end])])
         self.left_road = True
-        end = head.length + curve.length
+        end = head.length + curve.length + lateral - reach
         self.stretches[index] = (at, end)
         return end
 
@@ -318,17 +326,20 @@ class Drive:
         """Start in a driveway on `side` and drive onto the road, reaching the current lane at `at`."""
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, against=False)  # it joins the road on its own side
-        back = lateral * 0.8
+        reach = min(lateral, CORNER_REACH)  # straight over the road beyond its corner (see CORNER_REACH)
+        back = reach * 0.8
         d, n = heading_vector(heading), heading_vector(heading + turn)
         p1 = self.line.point(at)
-        p0 = (p1[0] - back * d[0] + lateral * n[0], p1[1] - back * d[1] + lateral * n[1])
+        corner = (p1[0] - back * d[0] + reach * n[0], p1[1] - back * d[1] + reach * n[1])
+        p0 = (corner[0] + (lateral - reach) * n[0], corner[1] + (lateral - reach) * n[1])
         facing = (heading + turn + 180.0) % 360.0
         start = (p0[0] - DRIVEWAY * heading_vector(facing)[0], p0[1] - DRIVEWAY * heading_vector(facing)[1])
-        curve = bezier(p0, facing, p1, heading)
+        curve = bezier(corner, facing, p1, heading)
+        across = [Polyline([p0, corner])] if lateral > reach else []
         tail = self.line.sub(at, self.line.length)
-        self.line = concat([Polyline([start, p0]), curve, tail])
+        self.line = concat([Polyline([start, p0]), *across, curve, tail])
         self.start_off_road = True
-        end = DRIVEWAY + curve.length
+        end = DRIVEWAY + lateral - reach + curve.length
         self.stretches[index] = (0.0, end)
         return end
 
