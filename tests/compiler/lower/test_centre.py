@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import angle_diff
+from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower import lower_on
 from sovarc.compiler.lower.assume import assume
-from sovarc.compiler.lower.corridor import CORNER_REACH, OFF_ROAD, Corridor, Drive
+from sovarc.compiler.lower.corridor import CORNER_REACH, OFF_ROAD, Corridor, Drive, _swing
 from sovarc.compiler.maps import Arm, LaneInfo, Site, match_site, scenario_needs
 from sovarc.dsl import parse
 from sovarc.dsl.ir import RoadKind, Side
@@ -131,3 +133,21 @@ def test_a_driveway_turn_across_a_wide_road_turns_its_corner_then_drives_straigh
     assert _sideways_when_turned(wide, 89.0) <= CORNER_REACH + 0.3
     lo, hi = wide.stretches[0]
     assert hi - lo > lateral  # the stretch runs to the road's edge and beyond, not only round the corner
+
+
+def test_a_driveway_corner_widens_until_the_trailing_body_keeps_off_the_lane_behind_the_turn() -> None:
+    site = _avenue(3)
+    corridor = Corridor.entering(site.arms[0])
+    from_kerb = Drive(corridor, corridor.own_line(1), 1, median=0.0)
+    from_kerb.leave(0, 30.0, Side.LEFT)  # nothing but the kerb behind its turn: the corner as it is
+    beside = Drive(corridor, corridor.own_line(3), 3, median=0.0)
+    beside.leave(0, 30.0, Side.LEFT)  # lanes 1 and 2 lie on its right, where the rear swings
+    lateral = WIDTH / 2.0 + 3 * WIDTH + OFF_ROAD
+    assert _sideways_when_turned(from_kerb, 89.0) <= CORNER_REACH + 0.3
+    assert CORNER_REACH + 0.5 < _sideways_when_turned(beside, 89.0) < lateral - 1.0  # wider, not the whole road
+    # its rear corner stays within lane 3's right-hand line and the oracles' tolerance (the lane runs
+    # east, so its left, where it turns, is north: +y); the curve is measured smooth, and its 16 chords
+    # (smoothed later, with the whole route) turn a little more abruptly: 0.1 m
+    turn = Polyline(beside.line.sub(30.0, beside.line.length).resample(0.1))
+    assert _swing(turn, np.array([0.0, 1.0]), beside.body) <= WIDTH / 2.0 + LINE_TOLERANCE + 0.1
+    assert _swing(Polyline(from_kerb.line.sub(30.0, 60.0).points), np.array([0.0, 1.0]), from_kerb.body) > 2.1
