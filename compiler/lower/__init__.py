@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
 from sovarc.compiler.lower.assume import COMPASS, assume
+from sovarc.compiler.lower.centre import centre_lanes
 from sovarc.compiler.lower.consistency import check_headings
 from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
@@ -331,14 +332,21 @@ def _routes(
 ) -> dict[str, Route]:
     routes: dict[str, Route] = {}
     people = [p for p in scenario.participants if p.role is Role.PEDESTRIAN]
+    centre = centre_lanes(scenario, match, striker, victim)
     for p in scenario.participants:
         if p.role is Role.VEHICLE:
             side = _driveway_side(p, scenario, striker, victim)
             partner = scenario.participant(victim if p.id == striker else striker)
             wrong_way = partner.lane if partner is not None and isinstance(partner.lane, int) else None
-            routes[p.id] = vehicle_route(
-                p, match, road_map, _preferred(p, limit), side, wrong_way, prefer.get(p.id), p.id in keep
+            if partner is not None and partner.id in centre:
+                wrong_way = centre[partner.id][0]
+            lane, why = centre.get(p.id, (None, None))
+            route = vehicle_route(
+                p, match, road_map, _preferred(p, limit), side, wrong_way, prefer.get(p.id), p.id in keep, lane
             )
+            if why:
+                route.notes.insert(0, f"{p.id} {why}")
+            routes[p.id] = route
     for p in people:
         partner_id = victim if p.id == striker else striker
         partner = routes.get(partner_id) or next(iter(routes.values()), None)

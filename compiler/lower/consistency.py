@@ -12,7 +12,7 @@ in other words.
 
 from __future__ import annotations
 
-from sovarc.compiler.crashes import CRASH_ANGLES
+from sovarc.compiler.crashes import CRASH_ANGLES, needs
 from sovarc.compiler.lower.assume import COMPASS
 from sovarc.dsl.errors import Diagnostic, Severity, UnsatError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Role, Scenario
@@ -38,11 +38,16 @@ def check_headings(scenario: Scenario) -> None:
     low, high = CRASH_ANGLES[crash.type.value]
     if max(0.0, apart - 2 * SWERVE) <= high and min(180.0, apart + 2 * SWERVE) >= low:
         return
-    way = "the same way" if crash.type is CrashType.REAR_END else "towards each other"
+    # Relative to the victim the striker moves the way it heads less the victim's way: closing head-on,
+    # its front meets the victim's front or a side first; going the same way, the rear or a side.
+    if crash.type is CrashType.REAR_END:
+        how, reach, never = "closing on each other", "front or a side", "rear"
+    else:
+        how, reach, never = "going the same way", "rear or a side", "front"
     message = (
-        f"a {crash.type.value} crash needs {striker.id} and {victim.id} heading {way} when they meet, "
-        f"but {striker.id} heads {striker.heading} and {victim.id} {victim.heading}, and neither turns: "
-        "no road can stage it"
+        f"{needs(crash.type, striker.id, victim.id)}, but {striker.id} heads {striker.heading} and {victim.id} "
+        f"{victim.heading}, and neither turns: {how}, {striker.id}'s front can reach {victim.id}'s {reach}, "
+        f"never its {never}: no road can stage it"
     )
     notes = [
         Diagnostic(
@@ -54,7 +59,8 @@ def check_headings(scenario: Scenario) -> None:
         if p is not None
     ]
     hint = (
-        "vehicles heading opposite ways meet front to front (frontal) or front into a side (side)"
+        "vehicles heading opposite ways meet front to front (frontal) or front into a side (side); a blow "
+        f"to {victim.id}'s rear corner as they pass is {striker.id} entering {victim.id}'s side: a side crash"
         if crash.type is CrashType.REAR_END
         else "vehicles heading the same way meet front into rear (rear_end) or front into a side (side)"
     )

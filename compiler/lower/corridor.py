@@ -15,7 +15,7 @@ import numpy as np
 from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.frame import Band
-from sovarc.compiler.geometry.polyline import Polyline, bezier, blend, concat
+from sovarc.compiler.geometry.polyline import Point, Polyline, bezier, blend, concat
 from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.route import Manoeuvre, change_length, swept_change_length
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
@@ -27,6 +27,15 @@ from sovarc.dsl.ir import ActionKind, Side
 
 OFF_ROAD = 6.0  # m beyond the road's edge that a driveway reaches
 DRIVEWAY = 8.0  # m of driveway before (or after) the curve
+# m sideways a driveway turn's corner reaches: a quarter turn of about 10 m mean radius (some
+# 18 km/h at the planned 2.5 m/s^2 sideways), as across a road of one lane each way. Across a wider
+# road the car turns such a corner and drives on straight over the rest: a curve as wide as the road
+# crossed the car's own lane at a shallow angle, still facing along it, as no driver turns. A plan's
+# body trails its front bumper along the heading (swing.py), so a tight corner swings the rear out
+# behind the turn: where a lane lies on that side, the corner widens (CORNER_STEP at a time, up to
+# the whole road) until the rear stays within the line, as a driver eases into a turn beside traffic.
+CORNER_REACH = 11.25
+CORNER_STEP = 1.0
 SWING_MARGIN = 0.15  # m kept in hand when a long body's rear swings out in a lane change
 OPEN_SLACK = 0.5  # m: an open median measured here may exceed the site's (sampled every 2 m) by this
 
@@ -301,34 +310,60 @@ class Drive:
         """Turn off the road into a driveway or side road on `side`."""
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, self.against)
-        forward = lateral * 0.8
-        d, n = heading_vector(heading), heading_vector(heading + turn)
+        n = heading_vector(heading + turn)
         p0 = self.line.point(at)
-        p1 = (p0[0] + forward * d[0] + lateral * n[0], p0[1] + forward * d[1] + lateral * n[1])
-        curve = bezier(p0, heading, p1, heading + turn)
+        reach, corner, curve = self._corner(p0, heading, turn, lateral)
+        p1 = (corner[0] + (lateral - reach) * n[0], corner[1] + (lateral - reach) * n[1])
+        across = [Polyline([corner, p1])] if lateral > reach else []  # straight over the rest of the road
         tail_end = (p1[0] + DRIVEWAY * n[0], p1[1] + DRIVEWAY * n[1])
         head = self.line.sub(0.0, at)
-        self.line = concat([head, curve, Polyline([p1, tail_end])])
+        self.line = concat([head, curve, *across, Polyline([p1, tail_end])])
         self.left_road = True
-        end = head.length + curve.length
+        end = head.length + curve.length + lateral - reach
         self.stretches[index] = (at, end)
         return end
+
+    def _corner(self, p0: Point, heading: float, turn: float, lateral: float) -> tuple[float, Point, Polyline]:
+        """A driveway turn's corner from `p0`: its sideways reach, its end and its curve (CORNER_REACH)."""
+        d, n = np.asarray(heading_vector(heading)), np.asarray(heading_vector(heading + turn))
+        reaches = [*np.arange(CORNER_REACH, lateral, CORNER_STEP), lateral] if lateral > CORNER_REACH else [lateral]
+        room = self._lane_width() / 2.0 + LINE_TOLERANCE  # the lane-line tolerance every oracle allows
+        for k, reach in enumerate(reaches):
+            corner = tuple(np.asarray(p0) + 0.8 * reach * d + reach * n)
+            curve = bezier(p0, heading, corner, heading + turn)  # type: ignore[arg-type]
+            if k == len(reaches) - 1 or not self._lane_behind(turn):
+                return float(reach), corner, curve  # type: ignore[return-value]
+            fine = bezier(p0, heading, corner, heading + turn, samples=64)  # type: ignore[arg-type]
+            if _swing(fine, n, self.body) <= room:  # measured on the curve itself, not its 16 chords
+                return float(reach), corner, curve  # type: ignore[return-value]
+        raise AssertionError("unreachable: the last reach is taken")
+
+    def _lane_behind(self, turn: float) -> bool:
+        """Whether a lane lies beside the car on the side away from its turn (where its rear swings)."""
+        if self.against:  # in the other direction's lanes: its lane 1 is on the car's left, its own lanes on the right
+            return True if turn < 0.0 else self.lane > 1
+        if turn < 0.0:  # a left turn swings the rear to the right: lanes numbered below its own
+            return self.lane > 1
+        return self.lane < len(self.corridor.own) or bool(self.corridor.other)
 
     def enter(self, index: int, at: float, side: Side) -> float:
         """Start in a driveway on `side` and drive onto the road, reaching the current lane at `at`."""
         heading = self.line.heading(at)
         lateral, turn = self._driveway(side, against=False)  # it joins the road on its own side
-        back = lateral * 0.8
+        reach = min(lateral, CORNER_REACH)  # straight over the road beyond its corner (see CORNER_REACH)
+        back = reach * 0.8
         d, n = heading_vector(heading), heading_vector(heading + turn)
         p1 = self.line.point(at)
-        p0 = (p1[0] - back * d[0] + lateral * n[0], p1[1] - back * d[1] + lateral * n[1])
+        corner = (p1[0] - back * d[0] + reach * n[0], p1[1] - back * d[1] + reach * n[1])
+        p0 = (corner[0] + (lateral - reach) * n[0], corner[1] + (lateral - reach) * n[1])
         facing = (heading + turn + 180.0) % 360.0
         start = (p0[0] - DRIVEWAY * heading_vector(facing)[0], p0[1] - DRIVEWAY * heading_vector(facing)[1])
-        curve = bezier(p0, facing, p1, heading)
+        curve = bezier(corner, facing, p1, heading)
+        across = [Polyline([p0, corner])] if lateral > reach else []
         tail = self.line.sub(at, self.line.length)
-        self.line = concat([Polyline([start, p0]), curve, tail])
+        self.line = concat([Polyline([start, p0]), *across, curve, tail])
         self.start_off_road = True
-        end = DRIVEWAY + curve.length
+        end = DRIVEWAY + lateral - reach + curve.length
         self.stretches[index] = (0.0, end)
         return end
 
@@ -340,3 +375,17 @@ def side_of(kind: ActionKind, neighbours: tuple[ActionKind, ...], default: Side)
     if kind is ActionKind.TURN_RIGHT or ActionKind.TURN_RIGHT in neighbours:
         return Side.RIGHT
     return default
+
+
+def _swing(curve: Polyline, towards: np.ndarray, body: Body) -> float:
+    """How far the body's rear corner on the side away from the turn lies from the curve's start line
+    as its front follows `curve` (its heading trailing the front, as a plan's body does)."""
+    at = np.linspace(0.0, curve.length, 120)
+    fronts = curve.points_at(at)
+    h = np.radians(curve.headings(at))
+    ahead = np.column_stack([np.sin(h), np.cos(h)])
+    outward = ahead @ np.array([[0.0, -1.0], [1.0, 0.0]])  # the heading turned 90 degrees clockwise
+    if float(outward[0] @ towards) > 0.0:  # pick the side away from the turn
+        outward = -outward
+    corners = fronts - body.length * ahead + body.width / 2.0 * outward
+    return float(((corners - fronts[0]) @ -towards).max())

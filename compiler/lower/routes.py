@@ -48,12 +48,14 @@ def vehicle_route(
     wrong_way_lane: int | None = None,
     prefer: tuple[ActionKind, str] | None = None,
     keep_lane: bool = False,
+    lane: int | None = None,
 ) -> Route:
     """`side`: where a driveway move without a stated side goes; `wrong_way_lane`: which lane of the
     other direction a retrograde move drives in (the crash partner's); `prefer`: the junction move
     (and why) to plan when the actions name none; `keep_lane`: make the junction move from the lane
     the car drives in, across its neighbours, where the map makes it from another lane only
-    (`_from_own_lane`). All four are chosen by the caller."""
+    (`_from_own_lane`); `lane`: the start lane, when not the placement's (centre.py). All are
+    chosen by the caller."""
     if is_backing(p):  # parked, or backing along the road (backing.py)
         return backing_route(p, match, participant_model(p).body, lanes_touched)
     placement = match.placement(p.id)
@@ -63,7 +65,7 @@ def vehicle_route(
     body = participant_model(p).body
     # A cyclist keeps to the right-most lane of its direction (the kerb lane), whatever lane the
     # report gives; the junction move then leaves from that lane, as a vehicle's does.
-    lane = 1 if body.vclass == "bicycle" else placement.lane or 1
+    lane = 1 if body.vclass == "bicycle" else lane or placement.lane or 1
     corridor = Corridor.entering(arm)
     drive = Drive(
         corridor,

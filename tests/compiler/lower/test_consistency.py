@@ -26,11 +26,12 @@ def test_a_rear_end_between_opposite_headings_names_the_crash_and_both_headings(
         check_headings(scenario)
     head, *notes = caught.value.diagnostics
     assert head.message == (
-        "a rear_end crash needs V1 and V2 heading the same way when they meet, "
-        "but V1 heads south and V2 north, and neither turns: no road can stage it"
+        "rear_end needs V1's front into V2's rear, headings within 45 degrees, but V1 heads south and V2 north, "
+        "and neither turns: closing on each other, V1's front can reach V2's front or a side, never its rear: "
+        "no road can stage it"
     )
     assert head.span is not None and head.span.line == _line_of(text, "type rear_end")
-    assert head.hint is not None and "frontal" in head.hint
+    assert head.hint is not None and "frontal" in head.hint and "V2's rear corner as they pass" in head.hint
     assert [n.severity for n in notes] == [Severity.NOTE, Severity.NOTE]
     assert notes[0].message == "V1 heads south and then: follow_lane, retrograde"
     assert [n.span.line for n in notes if n.span] == [_line_of(text, "heading south"), _line_of(text, "heading north")]
@@ -38,7 +39,9 @@ def test_a_rear_end_between_opposite_headings_names_the_crash_and_both_headings(
 
 def test_a_frontal_crash_between_the_same_headings_is_refused() -> None:
     _, scenario = _pair("frontal", "east", "east", a1="change_lane(to: 2)")
-    with pytest.raises(UnsatError, match="heading towards each other"):
+    with pytest.raises(
+        UnsatError, match="going the same way, V1's front can reach V2's rear or a side, never its front"
+    ):
         check_headings(scenario)
 
 
