@@ -367,7 +367,7 @@ def _off_their_lanes(scenario: Scenario, match: SiteMatch, ids: tuple[str, ...])
         p, placement = scenario.participant(pid), match.placement(pid)
         if p is None or p.role is not Role.VEHICLE or placement is None or placement.arm is None:
             continue
-        arm = next(a for a in match.site.arms if a.id == placement.arm)
+        arm = match.site.arm(placement.arm)
         if not isinstance(p.lane, int) or not arm.incoming:
             continue
         named = _junction_move(p)

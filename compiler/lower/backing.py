@@ -65,7 +65,7 @@ def backing_route(p: Participant, match: SiteMatch, body: Body, lanes_touched: o
         raise LoweringError(Diagnostic(message, where))
     if leaves is ActionKind.DRIVE_INTO and not parked:
         raise LoweringError(Diagnostic(f"{p.id}: `drive_into` pulls out of a space only after `parked`", where))
-    arm = next(a for a in match.site.arms if a.id == placement.arm)
+    arm = match.site.arm(placement.arm)
     corridor = Corridor.entering(arm)
     lane = 1 if parked else min(max(placement.lane or 1, 1), len(corridor.own))
     lane_line = corridor.own_line(lane)

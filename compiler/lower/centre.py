@@ -11,11 +11,9 @@ centre keeps the sideways travel of the swerve least (one lane and the median, n
 
 from __future__ import annotations
 
+from sovarc.compiler.lower.assume import COMPASS
 from sovarc.compiler.maps import SiteMatch
 from sovarc.dsl.ir import ActionKind, Heading, Participant, Role, Scenario
-
-OPPOSITE = {Heading.NORTH: Heading.SOUTH, Heading.SOUTH: Heading.NORTH, Heading.EAST: Heading.WEST}
-OPPOSITE |= {Heading.WEST: Heading.EAST}
 
 
 def lanes_each_way(scenario: Scenario) -> int | None:
@@ -43,7 +41,7 @@ def centre_lanes(scenario: Scenario, match: SiteMatch, striker: str, victim: str
         _choose(p, match, per, f"{p.id} crosses the centre line", chosen)
         if partner is None or _wrong_way(partner) or not _by_centre(partner, per):
             continue
-        if isinstance(p.heading, Heading) and partner.heading == OPPOSITE[p.heading]:
+        if isinstance(p.heading, Heading) and partner.heading == COMPASS[(COMPASS.index(p.heading) + 2) % 4]:
             _choose(partner, match, per, f"{p.id} comes at it across the centre line", chosen)
     return chosen
 
@@ -60,7 +58,7 @@ def _choose(p: Participant, match: SiteMatch, per: int, why: str, chosen: dict[s
     placement = match.placement(p.id)
     if placement is None or placement.arm is None:
         return
-    arm = next(a for a in match.site.arms if a.id == placement.arm)
+    arm = match.site.arm(placement.arm)
     count = len(arm.incoming)
     if count <= per or placement.lane == count:
         return  # the site's lane by the centre is the lane the report counts to from the right

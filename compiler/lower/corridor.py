@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from sovarc.compiler.crashes import LINE_TOLERANCE
 from sovarc.compiler.geometry.angles import heading_vector
+from sovarc.compiler.geometry.bodies import corner_array
 from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Point, Polyline, bezier, blend, concat
 from sovarc.compiler.lower import kturn
@@ -378,14 +379,10 @@ def side_of(kind: ActionKind, neighbours: tuple[ActionKind, ...], default: Side)
 
 
 def _swing(curve: Polyline, towards: np.ndarray, body: Body) -> float:
-    """How far the body's rear corner on the side away from the turn lies from the curve's start line
-    as its front follows `curve` (its heading trailing the front, as a plan's body does)."""
+    """How far the body's corners reach from the curve's start, away from the turn (`towards`), as its
+    front follows `curve` (its heading along the curve, as a plan's body does): the farthest is the
+    rear corner on the side away from the turn, swung out as the front comes round."""
     at = np.linspace(0.0, curve.length, 120)
-    fronts = curve.points_at(at)
-    h = np.radians(curve.headings(at))
-    ahead = np.column_stack([np.sin(h), np.cos(h)])
-    outward = ahead @ np.array([[0.0, -1.0], [1.0, 0.0]])  # the heading turned 90 degrees clockwise
-    if float(outward[0] @ towards) > 0.0:  # pick the side away from the turn
-        outward = -outward
-    corners = fronts - body.length * ahead + body.width / 2.0 * outward
-    return float(((corners - fronts[0]) @ -towards).max())
+    poses = np.column_stack([curve.points_at(at), curve.headings(at)])
+    corners = corner_array(poses, body.length, body.width)
+    return float(((corners - poses[0, :2]) @ -towards).max())

@@ -61,7 +61,7 @@ def vehicle_route(
     placement = match.placement(p.id)
     if placement is None or placement.arm is None or not isinstance(p.heading, Heading):
         raise LoweringError(Diagnostic(f"{p.id} has no place on site {match.site.id}", p.meta.where("heading")))
-    arm = next(a for a in match.site.arms if a.id == placement.arm)
+    arm = match.site.arm(placement.arm)
     body = participant_model(p).body
     # A cyclist keeps to the right-most lane of its direction (the kerb lane), whatever lane the
     # report gives; the junction move then leaves from that lane, as a vehicle's does.
@@ -166,7 +166,7 @@ def _through_junction(
     actions = p.known_actions
     site = match.site
     move_at = next((k for k, a in enumerate(actions) if a.kind in JUNCTION_MOVES), None)
-    arm = next(a for a in site.arms if a.id == match.placement(p.id).arm)  # type: ignore[union-attr]
+    arm = site.arm(match.placement(p.id).arm)  # type: ignore[union-attr,arg-type]
     before = range(move_at if move_at is not None else len(actions))
     after = range(move_at + 1, len(actions)) if move_at is not None else range(0)
     if move_at is None:
@@ -234,11 +234,9 @@ def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participa
     kept to its own radius, would leave the line and the road. Another site may have a wider corner.
     A connection is drawn (by SUMO) for a car, which takes it as it is: only a body that turns wider
     than the car's tightest is checked."""
-    tightest = model(body).limits.path_radius
-    if tightest <= PLANNED.path_radius:
-        return
-    radius = _radius(line, lo, hi)
-    if radius < CORNER_SLACK * tightest:
+    radius = _too_tight(line, body, lo, hi)
+    if radius is not None:
+        tightest = model(body).limits.path_radius
         raise LoweringError(
             Diagnostic(
                 f"on {site}, {p.id} ({body.vclass}, {body.length:g} m) cannot take the junction's corner: "
@@ -249,10 +247,15 @@ def _check_corner(line: Polyline, lo: float, hi: float, body: Body, p: Participa
         )
 
 
-def _radius(line: Polyline, lo: float = 0.0, hi: float = math.inf) -> float:
-    """The tightest bend of `line` between two arc lengths, as the corner check measures it."""
+def _too_tight(line: Polyline, body: Body, lo: float = 0.0, hi: float = math.inf) -> float | None:
+    """The radius `line` bends at between two arc lengths, when that is tighter than `body` can follow
+    (within CORNER_SLACK); None when it can, and always for a body that turns as tight as a car."""
+    tightest = model(body).limits.path_radius
+    if tightest <= PLANNED.path_radius:
+        return None
     inside = (line.s >= lo) & (line.s <= hi)
-    return float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
+    radius = float(line.curvature_radius(window=CORNER_WINDOW)[inside].min()) if inside.any() else math.inf
+    return radius if radius < CORNER_SLACK * tightest else None
 
 
 def _default_move(site: Any, arm: Arm, prefer: ActionKind | None) -> ActionKind:
@@ -315,8 +318,7 @@ def _junction_line(
         turn = bezier(end, heading, target.shape[0], Polyline(target.shape).heading(0.0))
     else:
         turn = Polyline([end, *shape, target.shape[0]])
-    tightest = model(drive.body).limits.path_radius
-    if tightest > PLANNED.path_radius and _radius(turn) < CORNER_SLACK * tightest:
+    if _too_tight(turn, drive.body) is not None:
         # a corner drawn for a car: a bus or truck swings wide through it, if the road lets it (wide.py)
         wide = wide_turn(drive.line, corridor.own_line(target.number), drive.body, road_map)
         if wide is not None:

@@ -385,26 +385,27 @@ def _apart_at_start(problem: Problem, motions: dict[str, Motion], need: Any) -> 
         ra, rb = problem.routes[a], problem.routes[b]
         if not _start_together(ra, rb):
             continue
-        parted = _parting(problem.routes[problem.victim], problem.routes[problem.striker], problem.contact.lo)
-        if {a, b} == {problem.striker, problem.victim} and parted is None:
-            ahead, behind = problem.victim, problem.striker
-            need(f"{ahead}.route", motions[ahead].start - motions[behind].start >= _spacing(problem, ahead))
-        elif {a, b} == {problem.striker, problem.victim}:
-            # they part before the crash (a pocket opens beside the lane): either may lead, and the
-            # one behind stays behind until they have parted
-            need(
-                f"{problem.victim}.route",
-                z3.Or(
-                    _in_turn(problem, motions, problem.victim, problem.striker, parted),
-                    _in_turn(problem, motions, problem.striker, problem.victim, parted),
-                ),
-            )
-        else:
+        if {a, b} != {problem.striker, problem.victim}:
             need(
                 f"{b}.route",
                 z3.Or(
                     motions[b].start - motions[a].start >= _spacing(problem, b),
                     motions[a].start - motions[b].start >= _spacing(problem, a),
+                ),
+            )
+            continue
+        victim, striker = problem.victim, problem.striker
+        parted = _parting(problem.routes[victim], problem.routes[striker], problem.contact.lo)
+        if parted is None:
+            need(f"{victim}.route", motions[victim].start - motions[striker].start >= _spacing(problem, victim))
+        else:
+            # they part before the crash (a pocket opens beside the lane): either may lead, and the
+            # one behind stays behind until they have parted
+            need(
+                f"{victim}.route",
+                z3.Or(
+                    _in_turn(problem, motions, victim, striker, parted),
+                    _in_turn(problem, motions, striker, victim, parted),
                 ),
             )
 

@@ -144,7 +144,7 @@ def _straight_on(site: Site, needs: tuple[Need, ...], match: SiteMatch) -> int:
         placement = match.placement(need.participant)
         if need.move is not None or placement is None or placement.arm is None or site.kind is RoadKind.STRAIGHT:
             continue
-        arm = next(a for a in site.arms if a.id == placement.arm)
+        arm = site.arm(placement.arm)
         count += any(c.direction == "s" for c in site.connections_from(arm))
     return count
 

@@ -68,6 +68,10 @@ class Site:
     def arm_in_slot(self, slot: int) -> Arm | None:
         return next((arm for arm in self.arms if arm.slot == slot % 4), None)
 
+    def arm(self, arm_id: str) -> Arm:
+        """The arm of that id (a placement's `arm`)."""
+        return next(a for a in self.arms if a.id == arm_id)
+
     def arm_of_lane(self, lane_id: str) -> Arm | None:
         return next((a for a in self.arms if any(lane.id == lane_id for lane in a.incoming + a.outgoing)), None)
 
