@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.choice import FrontEndError
-from sovarc.compiler.frontend.text import first_impact, prepare, sentences
+from sovarc.compiler.frontend.text import first_impact, prepare, sentences, without_non_impacts
 
 _MONTH = (
     r"(?:January|February|March|April|May|June|July|August|September|October|November|December"
@@ -67,14 +67,9 @@ _IMPACT_WORD = re.compile(
     r"rear[- ]end\w*|clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
     re.I,
 )
-_AVOIDED = re.compile(
-    r"\b(?:avoid|prevent)(?:ing|ed|s)? (?:a |the |an |any |making )?(?:\w+ )?"
-    r"(?:collision|impact|contact|crash|striking|hitting)\b",
-    re.I,
-)
 
 
 def says_impact(text: str) -> bool:
     """Whether any sentence says road users met, in words the rules may not read (their refusal then says
     more than "no crash" could)."""
-    return any(_IMPACT_WORD.search(_AVOIDED.sub(" ", s)) for s in sentences(text))
+    return any(_IMPACT_WORD.search(without_non_impacts(s)) for s in sentences(text))

@@ -36,9 +36,19 @@ _NO_IMPACT = re.compile(
     r"\b(?<!unable to )(?<!failed to )(?<!not )(?<!n't )(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:collision|impact|contact|crash|striking|hitting)\b"
     r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
-    r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b",  # what held then, not the meeting
+    r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b"  # what held then, not the meeting
+    # a meeting denied: "no collision occurred", "passed without contact", "did not strike", "never made contact"
+    r"|\b(?:no|without|never|(?:did|does|do|was|were|is) ?(?:not|n't)) (?:a |the |an |any |make |making |made )?"
+    r"(?:(?!avoid|prevent)\w+ )?"
+    r"(?:collisions?|impacts?|contact|crash(?:es)?|struck|strike|striking|hit|hitting|collide)\b",
     re.IGNORECASE,
 )
+
+
+def without_non_impacts(sentence: str) -> str:
+    """The sentence with the impact words that say no participants met blanked: a crash avoided, denied, or
+    named only as the scene or the time."""
+    return _NO_IMPACT.sub(" ", sentence)
 
 
 def normalize_names(text: str) -> str:
@@ -173,8 +183,7 @@ def participants(text: str) -> list[str]:
 
 def describes_impact(sentence: str) -> bool:
     """A sentence that says participants met (not one that only says a crash was avoided)."""
-    cleaned = _NO_IMPACT.sub(" ", sentence)
-    return bool(_IMPACT.search(cleaned) and re.search(r"\b[VP]\d\b", sentence))
+    return bool(_IMPACT.search(without_non_impacts(sentence)) and re.search(r"\b[VP]\d\b", sentence))
 
 
 # A summary only names the parties ("V1 ... was in a collision involving V2 on [XXX]"); the impact is where the

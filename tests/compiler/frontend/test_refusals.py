@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 from sovarc.compiler.cli import main
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
+from sovarc.compiler.frontend.refusals import says_impact
 from sovarc.dsl.span import Source
 
 CRASH = (
@@ -28,6 +29,9 @@ def test_one_crash_is_read() -> None:
     [
         ("V1 was traveling north on Main Street. V2 was traveling south on Main Street. Both continued.", "no crash"),
         ("The Waymo AV braked to avoid a collision with a passenger car and stopped. Nobody was hurt.", "no crash"),
+        ("V1 was traveling north on a two-lane road. It was a sunny day. No collision occurred.", "no crash"),
+        ("V1 and V2 passed each other on Main Street without contact.", "no crash"),
+        ("V1 was traveling north when V2 turned left in front of it. V1 braked and did not strike V2.", "no crash"),
         (CRASH + "\n" + CRASH.replace("1:26 PM", "4:40 PM"), "more than one report"),
         (CRASH + "\n-----\n" + "V1 was traveling north when V2 struck the rear of V1.", "more than one report"),
         (CRASH + " In a separate incident later that day, the Waymo AV was struck by an SUV.", "several crashes"),
@@ -53,3 +57,18 @@ def test_a_refused_report_writes_nothing_and_the_others_are_written(
     err = capsys.readouterr().err
     assert "two.txt" in err and "more than one report" in err and "1 of 2 scenario(s) written" in err
     assert sorted(p.name for p in out.iterdir()) == ["good.sov"]
+
+
+@pytest.mark.parametrize(
+    ("sentence", "met"),
+    [
+        ("V1 did not stop and struck the rear of V2.", True),
+        ("The driver never braked; V1 hit V2.", True),
+        ("V2 had no time to react and collided with V1.", True),
+        ("No collision occurred.", False),
+        ("The vehicles never made contact.", False),
+        ("V1 swerved to avoid hitting the pedestrian.", False),
+    ],
+)
+def test_a_denied_or_averted_impact_is_no_impact(sentence: str, met: bool) -> None:
+    assert says_impact(sentence) is met
