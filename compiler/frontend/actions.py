@@ -364,7 +364,9 @@ def _bare_turns(piece: Piece, done: str, side: ActionKind) -> list[tuple[int, Ac
     ]
 
 
-def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown) -> list[tuple[int, Action]]:
+def _found(
+    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, toward: str | None = None
+) -> list[tuple[int, Action]]:
     at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
     near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
     meant = _meant_turn(pieces)
@@ -385,7 +387,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                 if act is ActionKind.CHANGE_LANE and _IN_OPPOSING.search(said + done[: m.start()]):
                     act = ActionKind.RETROGRADE  # out of the oncoming lane into another's: onto the wrong side
                 if act is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
-                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()])
+                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()]) or toward
                     if side is None:
                         continue
                     to = Side(side)
@@ -456,12 +458,15 @@ def read_actions(
     struck_first: bool,
     struck_behind: bool = False,
     side_impact: bool = False,
+    toward: str | None = None,
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
     `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
     `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
-    planned turn counts as made only then: see `_carried_out`)."""
-    return read_actions_at(pieces, road, heading, struck_first, struck_behind, side_impact)[0]
+    planned turn counts as made only then: see `_carried_out`); `toward` is the side ("left", "right") a lane
+    change said without its side went, when the impact shows it ("switched lanes and made contact with the
+    driver side of V1": it came from V1's left, so it moved right)."""
+    return read_actions_at(pieces, road, heading, struck_first, struck_behind, side_impact, toward)[0]
 
 
 def read_actions_at(
@@ -471,6 +476,7 @@ def read_actions_at(
     struck_first: bool,
     struck_behind: bool = False,
     side_impact: bool = False,
+    toward: str | None = None,
 ) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
@@ -483,7 +489,7 @@ def read_actions_at(
             return (Action(ActionKind.FOLLOW_LANE),), (moving,)
         return UNKNOWN, ()
     plan = _planned_turn(pieces, road) if side_impact else None
-    found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
+    found = _carried_out(_found(pieces, road, heading, toward), plan, struck_behind)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across

@@ -1,0 +1,80 @@
+"""The crash partner's move in fleet narratives, each reading on sentences written for these tests: a lane
+change said without its side, the move under way at the impact, a move into another's lane."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.dsl.ir import Action, ActionKind, Scenario, Side, Unknown
+from sovarc.dsl.span import Source
+
+OPENING = (
+    "On March [XXX], 2025 at 4:05 PM PT a Waymo Autonomous Vehicle (Waymo AV) was in a collision involving a sedan. "
+)
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", OPENING + text)).scenario
+
+
+def actions(s: Scenario, pid: str) -> list[Action]:
+    p = next(p for p in s.participants if p.id == pid)
+    return [] if isinstance(p.actions, Unknown) else list(p.actions)
+
+
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        # the other's side met is the side the striker came from: it moved the other way
+        (
+            "The Waymo AV was traveling north on [XXX] when a sedan switched lanes and made contact with the driver "
+            "side of the Waymo AV.",
+            Side.RIGHT,
+        ),
+        (
+            "The Waymo AV was traveling north on [XXX] when a sedan began to change lanes and made contact with the "
+            "passenger side of the Waymo AV.",
+            Side.LEFT,
+        ),
+        # its own side met is the way it moved
+        (
+            "The Waymo AV was traveling north on [XXX]. A sedan traveling beside the Waymo AV moved into the Waymo "
+            "AV's lane, and the passenger side of the sedan made contact with the Waymo AV.",
+            Side.RIGHT,
+        ),
+        (
+            "The Waymo AV was traveling north on [XXX] when a sedan was changing lanes. The front driver side corner "
+            "of the sedan made contact with the rear of the Waymo AV.",
+            Side.LEFT,
+        ),
+    ],
+)
+def test_a_lane_change_without_its_side_goes_toward_the_side_it_met(text: str, side: Side) -> None:
+    s = read(text)
+    assert s.crash.striker == "V2"
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, side)
+
+
+def test_a_lane_change_with_its_side_keeps_it() -> None:
+    """The words win over the sides met: "to the left" with the other's left side met is still left."""
+    s = read(
+        "The Waymo AV was traveling north on [XXX] when a sedan changed lanes to the left and made contact with "
+        "the driver side of the Waymo AV."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
+
+
+def test_the_victims_side_says_nothing_of_its_own_lane_change() -> None:
+    """Struck on its right side, the automated vehicle was met from its right: whether it moved left or right is
+    not said, so a lane change without a side stays unread."""
+    s = read(
+        "The Waymo AV began to change lanes on [XXX] when the front of a sedan made contact with the passenger side "
+        "of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+    assert ActionKind.CHANGE_LANE not in [a.kind for a in actions(s, "V1")]
+
+
+def test_no_side_met_no_side_read() -> None:
+    s = read("The Waymo AV was traveling north when it was rear-ended by a sedan that was switching lanes.")
+    assert ActionKind.CHANGE_LANE not in [a.kind for a in actions(s, "V2")]
