@@ -171,6 +171,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
             r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            r"|\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
             re.I,
@@ -221,6 +222,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
 _IN_OPPOSING = re.compile(
     r"\b(?:in|from|within) (?:the|an|a) (?:oncoming|opposing|opposite)(?: traffic| travel)? lanes?\b", re.I
 )
+# The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
+# in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
+# from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
+# on the left"; "made a left turn in front of V1. As it passed V1, ..."), as NHTSA codes it.
+_DRIVING_ON = re.compile(r"\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b", re.I)
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
     r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"
@@ -496,7 +502,9 @@ def read_actions_at(
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found.sort(key=lambda item: item[0])
     # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
-    # did nothing else next: moving off into a turn is the turn
+    # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
+    # its turn or lane change, the last thing it did (see _DRIVING_ON).
+    on = {p.at + m.start() for p in pieces for m in _DRIVING_ON.finditer(what_was_done(p.text))}
     found = [
         (at, a)
         for i, (at, a) in enumerate(found)
@@ -506,6 +514,7 @@ def read_actions_at(
             and found[i - 1][1].kind is ActionKind.STOP
             and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
         )
+        or (i > 0 and i + 1 == len(found) and found[i - 1][1].kind in _MANOEUVRES and at in on)
     ]
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well

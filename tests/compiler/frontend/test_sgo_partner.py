@@ -78,3 +78,38 @@ def test_the_victims_side_says_nothing_of_its_own_lane_change() -> None:
 def test_no_side_met_no_side_read() -> None:
     s = read("The Waymo AV was traveling north when it was rear-ended by a sedan that was switching lanes.")
     assert ActionKind.CHANGE_LANE not in [a.kind for a in actions(s, "V2")]
+
+
+@pytest.mark.parametrize(
+    "move",
+    [
+        "A sedan turned left onto [XXX] and approached the Waymo AV from behind.",
+        "A sedan made a right turn onto [XXX] and then approached the stopped Waymo AV quickly from behind.",
+        "A sedan that was in the right lane changed lanes to the left and approached the Waymo AV closely from behind.",
+    ],
+)
+def test_closing_from_behind_after_a_manoeuvre_is_driving_on(move: str) -> None:
+    """Closing on another from behind puts it in that one's lane, behind it: its turn or lane change was over, and
+    at the impact it drove along its lane."""
+    s = read(
+        f"The Waymo AV was stopped at a red light. {move} The front of the sedan made contact with the rear of "
+        "the Waymo AV."
+    )
+    kinds = [a.kind for a in actions(s, "V2")]
+    assert kinds[-1] is ActionKind.FOLLOW_LANE
+    assert {ActionKind.TURN_LEFT, ActionKind.TURN_RIGHT, ActionKind.CHANGE_LANE} & set(kinds)
+
+
+@pytest.mark.parametrize(
+    "move",
+    [
+        "A sedan made a left turn onto [XXX] in front of the stopped Waymo AV. As the sedan passed the Waymo AV, the "
+        "driver side of the sedan made contact with the driver side of the Waymo AV.",
+        "A sedan behind the Waymo AV changed lanes to the left. As the sedan was passing the Waymo AV, the passenger "
+        "side of the sedan made contact with the rear driver side of the Waymo AV.",
+    ],
+)
+def test_a_pass_after_a_manoeuvre_is_the_manoeuvre(move: str) -> None:
+    """A pass is often the lane change or the turn itself (NHTSA codes it so): it adds no move of its own."""
+    s = read(f"The Waymo AV was stopped at a red light. {move}")
+    assert actions(s, "V2")[-1].kind in (ActionKind.TURN_LEFT, ActionKind.CHANGE_LANE)
