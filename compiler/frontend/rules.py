@@ -21,7 +21,7 @@ from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
-from sovarc.compiler.frontend.standing import introduced_parked, standing_struck, still_at_impact
+from sovarc.compiler.frontend.standing import introduced_doing, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -482,7 +482,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
-    people = introduced_parked(people, prepared.words, named, spots)
+    people = introduced_doing(people, prepared.words, named, spots)
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)

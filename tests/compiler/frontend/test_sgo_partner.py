@@ -113,3 +113,19 @@ def test_a_pass_after_a_manoeuvre_is_the_manoeuvre(move: str) -> None:
     """A pass is often the lane change or the turn itself (NHTSA codes it so): it adds no move of its own."""
     s = read(f"The Waymo AV was stopped at a red light. {move}")
     assert actions(s, "V2")[-1].kind in (ActionKind.TURN_LEFT, ActionKind.CHANGE_LANE)
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["an approaching sedan", "an oncoming sedan", "the trailing sedan", "a passing sedan", "a speeding sedan"],
+)
+def test_introduced_in_motion_it_drove_along_its_lane(words: str) -> None:
+    """A road user the report says nothing of before the impact but the words that introduce it: those words
+    say what it was doing, as "a parked sedan" does."""
+    s = read(f"The Waymo AV was stopped on [XXX] when {words} made contact with the driver side of the Waymo AV.")
+    assert [a.kind for a in actions(s, "V2")] == [ActionKind.FOLLOW_LANE]
+
+
+def test_introduced_with_no_motion_stays_unknown() -> None:
+    s = read("The Waymo AV was turning left when a white sedan made contact with the front bumper of the Waymo AV.")
+    assert actions(s, "V2") == []
