@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd
+from sovarc.compiler.frontend.names import label_parties
 from sovarc.dsl.ir import Action, ActionKind, Scenario, Side, Unknown
 from sovarc.dsl.span import Source
 
@@ -129,3 +130,25 @@ def test_introduced_in_motion_it_drove_along_its_lane(words: str) -> None:
 def test_introduced_with_no_motion_stays_unknown() -> None:
     s = read("The Waymo AV was turning left when a white sedan made contact with the front bumper of the Waymo AV.")
     assert actions(s, "V2") == []
+
+
+def test_another_of_a_kind_is_not_the_one_named_before() -> None:
+    """'another SUV' is a second SUV: the double-parked one named before it is a bystander, and its state is not
+    the partner's."""
+    s = read(
+        "The Waymo AV was traveling east on [XXX] and came to a stop behind an SUV that was double parked. Once the "
+        "traffic cleared, another SUV traveling directly behind the Waymo AV began passing the Waymo AV and the "
+        "passenger door of the SUV made contact with the rear driver side of the Waymo AV."
+    )
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+    assert ActionKind.PARKED not in [a.kind for a in actions(s, "V2")]
+    assert s.crash.striker == "V2"
+
+
+def test_another_renames_only_what_follows_it() -> None:
+    named, _ = label_parties(
+        "The Waymo AV was stopped behind a sedan at a red light. Then another sedan made contact with the rear of "
+        "the Waymo AV. The sedan left the scene."
+    )
+    assert "behind a sedan" in named
+    assert "Then V2 made contact" in named and "V2 left the scene" in named
