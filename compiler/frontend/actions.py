@@ -171,6 +171,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
             r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            r"|\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
             re.I,
@@ -221,6 +222,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
 _IN_OPPOSING = re.compile(
     r"\b(?:in|from|within) (?:the|an|a) (?:oncoming|opposing|opposite)(?: traffic| travel)? lanes?\b", re.I
 )
+# The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
+# in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
+# from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
+# on the left"; "made a left turn in front of V1. As it passed V1, ..."), as NHTSA codes it.
+_DRIVING_ON = re.compile(r"\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b", re.I)
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
     r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"
@@ -364,7 +370,9 @@ def _bare_turns(piece: Piece, done: str, side: ActionKind) -> list[tuple[int, Ac
     ]
 
 
-def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown) -> list[tuple[int, Action]]:
+def _found(
+    pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unknown, toward: str | None = None
+) -> list[tuple[int, Action]]:
     at_junction = road in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION)
     near = at_junction and any(_JUNCTION.search(p.context) for p in pieces)
     meant = _meant_turn(pieces)
@@ -385,7 +393,7 @@ def _found(pieces: list[Piece], road: RoadKind | Unknown, heading: Heading | Unk
                 if act is ActionKind.CHANGE_LANE and _IN_OPPOSING.search(said + done[: m.start()]):
                     act = ActionKind.RETROGRADE  # out of the oncoming lane into another's: onto the wrong side
                 if act is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
-                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()])
+                    side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()]) or toward
                     if side is None:
                         continue
                     to = Side(side)
@@ -456,12 +464,15 @@ def read_actions(
     struck_first: bool,
     struck_behind: bool = False,
     side_impact: bool = False,
+    toward: str | None = None,
 ) -> tuple[Action, ...] | Unknown:
     """The ordered actions of one participant before the first impact (`pieces` are its pieces before it);
     `struck_first` says whether its front made the impact, `struck_behind` whether its rear was struck,
     `side_impact` whether the crash is front to side, the geometry of a turn across or into another's path (a
-    planned turn counts as made only then: see `_carried_out`)."""
-    return read_actions_at(pieces, road, heading, struck_first, struck_behind, side_impact)[0]
+    planned turn counts as made only then: see `_carried_out`); `toward` is the side ("left", "right") a lane
+    change said without its side went, when the impact shows it ("switched lanes and made contact with the
+    driver side of V1": it came from V1's left, so it moved right)."""
+    return read_actions_at(pieces, road, heading, struck_first, struck_behind, side_impact, toward)[0]
 
 
 def read_actions_at(
@@ -471,6 +482,7 @@ def read_actions_at(
     struck_first: bool,
     struck_behind: bool = False,
     side_impact: bool = False,
+    toward: str | None = None,
 ) -> tuple[tuple[Action, ...] | Unknown, tuple[int, ...]]:
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
@@ -483,14 +495,16 @@ def read_actions_at(
             return (Action(ActionKind.FOLLOW_LANE),), (moving,)
         return UNKNOWN, ()
     plan = _planned_turn(pieces, road) if side_impact else None
-    found = _carried_out(_found(pieces, road, heading), plan, struck_behind)
+    found = _carried_out(_found(pieces, road, heading, toward), plan, struck_behind)
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found.sort(key=lambda item: item[0])
     # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
-    # did nothing else next: moving off into a turn is the turn
+    # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
+    # its turn or lane change, the last thing it did (see _DRIVING_ON).
+    on = {p.at + m.start() for p in pieces for m in _DRIVING_ON.finditer(what_was_done(p.text))}
     found = [
         (at, a)
         for i, (at, a) in enumerate(found)
@@ -500,6 +514,7 @@ def read_actions_at(
             and found[i - 1][1].kind is ActionKind.STOP
             and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
         )
+        or (i > 0 and i + 1 == len(found) and found[i - 1][1].kind in _MANOEUVRES and at in on)
     ]
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well

@@ -163,6 +163,22 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
     return sorted(set(parts))
 
 
+_SIDE_WORD = {"left": "left", "driver": "left", "drivers": "left", "right": "right", "passenger": "right"}
+
+
+def sides_met(sentence: str) -> dict[str, str]:
+    """Each participant's side ("left" or "right") that the impact sentence names a part on: "the driver side of
+    V1", "V2's front passenger corner" (a car is driven from the left, so its driver side is its left). Only
+    parts tied to their owner by "of" or "'s", the first one each, and none that names both sides."""
+    found: dict[str, str] = {}
+    for pattern in _OWNED[:2]:
+        for m in pattern.finditer(sentence):
+            sides = {_SIDE_WORD[w] for w in re.split(r"[- ']+", m.group("part").lower()) if w in _SIDE_WORD}
+            if len(sides) == 1 and m.group("v") not in found:
+                found[m.group("v")] = sides.pop()
+    return found
+
+
 def agent_named(sentence: str) -> bool:
     """Whether the sentence names its striker as the agent of a passive strike ("struck by the front of V1")."""
     return bool(_AGENT.search(sentence) or _AGENT_OWNED.search(sentence))

@@ -250,10 +250,15 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
         pid = f"{role}{counts[role]}"
         named.append(f"{pid} '{words}'")
         words_of[pid] = words
+        # "another SUV" is not the SUV named before it ("stopped behind an SUV that was double parked ... another
+        # SUV ... made contact"): only what follows it names this one
+        start = text.find(words) if words.lower().startswith("another ") else 0
+        head, tail = text[: max(start, 0)], text[max(start, 0) :]
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            text = _replace_phrase(text, words_for, pid)
+            tail = _replace_phrase(tail, words_for, pid)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
-            text = _replace_phrase(text, kind.split()[-1], pid)  # "the car" for "a passenger car"
+            tail = _replace_phrase(tail, kind.split()[-1], pid)  # "the car" for "a passenger car"
+        text = head + tail
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
             text = _OTHER.sub(pid, text)
     note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"

@@ -16,12 +16,12 @@ from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
-from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at
+from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at, sides_met
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.situation import wrong_side
-from sovarc.compiler.frontend.standing import introduced_parked, standing_struck, still_at_impact
+from sovarc.compiler.frontend.standing import introduced_doing, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -467,7 +467,8 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
             continue
         behind = crash.type is CrashType.REAR_END and crash.victim == pid
         side = crash.type is CrashType.SIDE
-        actions, ats = read_actions_at(early, kind, heading, crash.striker == pid, behind, side)
+        toward = _moved_toward(sents[impact] if impact >= 0 else "", pid, crash)
+        actions, ats = read_actions_at(early, kind, heading, crash.striker == pid, behind, side, toward)
         spots += [
             _clause(f"{pid}.actions[{n}]", p, at - p.at) for n, at in enumerate(ats, 1) if (p := _piece_at(early, at))
         ]
@@ -481,7 +482,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         if isinstance(actions, Unknown) and isinstance(heading, Unknown):
             lane = UNKNOWN  # nothing said about it before the impact: where it was is not known either
         people.append(Participant(pid, Role.VEHICLE, heading, lane, speed, actions))
-    people = introduced_parked(people, prepared.words, named, spots)
+    people = introduced_doing(people, prepared.words, named, spots)
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
@@ -509,6 +510,23 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
     )
     scenario = Scenario(name, provenance, environment, Road(kind, lanes, speed_limit), tuple(people), crash)
     return keep_stated(scenario)
+
+
+def _moved_toward(sentence: str, pid: str, crash: Crash) -> str | None:
+    """The side the striker moved to, read from the sides the impact met: two vehicles side by side meet where
+    one moved over into the other, so its own side that met is the way it moved, and the other's side that met
+    is the side it came from (the other way). None for the victim (the side it was met on says where the striker
+    came from, not where it went), when the sentence names no side of either, or when the other is a pedestrian
+    (one crossing in front meets a car's front from the side it came from, not alongside)."""
+    met = sides_met(sentence)
+    other = crash.victim if crash.striker == pid else None
+    if not isinstance(other, str) or not other.startswith("V"):
+        return None
+    if pid in met:
+        return met[pid]
+    if other in met:
+        return "right" if met[other] == "left" else "left"
+    return None
 
 
 def _backing(people: list[Participant]) -> frozenset[str]:

@@ -74,21 +74,37 @@ def _front_strikes(sentence: str, pid: str) -> bool:
     )
 
 
-def introduced_parked(
+# Words that introduce a road user in motion along the road: "an approaching van", "the trailing bus", "an
+# oncoming SUV".
+_MOVING = re.compile(
+    r"\b(?:approaching|oncoming|trailing|following|moving|travell?ing|speeding|passing|overtaking)\b", re.I
+)
+
+
+def introduced_doing(
     people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
 ) -> list[Participant]:
     """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
-    passenger vehicle"): the words that introduce a road user state what it was doing, so it stood parked.
-    `words` are the words each party numbered by rule was first named by (see `names.parties`)."""
+    passenger vehicle") or moving ("an approaching van", "the trailing bus"): the words that introduce a road
+    user state what it was doing, so it stood parked, or drove along its lane. `words` are the words each party
+    numbered by rule was first named by (see `names.parties`)."""
     out = []
     for p in people:
         first = re.search(rf"\b{p.id}\b", named)
         if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
             out.append(p)
             continue
-        if not re.search(r"\bparked\b", words.get(p.id, ""), re.I):
+        said = words.get(p.id, "")
+        kind = (
+            ActionKind.PARKED
+            if re.search(r"\bparked\b", said, re.I)
+            else ActionKind.FOLLOW_LANE
+            if _MOVING.search(said)
+            else None
+        )
+        if kind is None:
             out.append(p)
             continue
         spots.append((f"{p.id}.actions[1]", "named", *first.span()))
-        out.append(replace(p, actions=(Action(ActionKind.PARKED),)))
+        out.append(replace(p, actions=(Action(kind),)))
     return out
