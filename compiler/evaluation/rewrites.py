@@ -59,7 +59,9 @@ def _renamed(form: Callable[[int], str]) -> Callable[[str], str]:
 
 # "V1's front" -> "the front of V1": the possessive and the of-phrase name the same part.
 _PARTS = (
-    r"(?:(?:left|right|front|rear|back|driver|passenger)(?:[- ](?:front|rear|side|corner|quarter|door|bumper))*"
+    r"(?:(?:left|right|front|rear|back|driver|passenger)(?:[- ](?:front|rear|side|corner|quarter|door|bumper))+"
+    r"(?: (?:side|corner|quarter|door|bumper|fender|panel|area|end|plane))?"
+    r"|(?:left|right|front|rear|back)"
     r"(?: (?:side|corner|quarter|door|bumper|fender|panel|area|end|plane))?|front|rear|bumper|fender)"
 )
 _POSSESSIVE = re.compile(r"\b(?P<name>V\d)'s (?P<part>" + _PARTS + r")\b(?![\w-])")
@@ -214,6 +216,13 @@ _CLAUSE_SUBJECT = (
     r"(?:V\d|(?:he|she|it|they)|the (?:driver|operator) of V\d|the (?:[\w-]+ ){0,3}(?:front|rear|side|corner|"
     r"bumper|end) of V\d)\b(?! (?:and|or)\b)"
 )
+# a clause before "and" has a verb of its own after its subject ("V2 turned left and ..."; not "the posted limit
+# for V1 and V2 was", where the article makes "posted" no verb)
+_FINITE = re.compile(
+    r"(?<!\bthe )(?<!\ban )(?<!\ba )\b(?:was|were|had|is|\w{2,}[^\We]ed|struck|hit|went|came|made|began|saw|drove"
+    r"|ran)\b",
+    re.I,
+)
 _AND = re.compile(r"(?:,? and (?P<then>then )?|, then )(?=" + _CLAUSE_SUBJECT + r")", re.I)
 
 
@@ -224,8 +233,9 @@ def split_and(text: str) -> str:
     out: list[str] = []
     last = 0
     for m in _AND.finditer(text):
-        if re.search(r"\b(?:between|both)\b[^.]*$", text[last : m.start()]):
-            continue  # "between V1 and V2": a pair, not two clauses
+        clause = re.split(r"[.!?]\s+", text[: m.start()])[-1]
+        if re.search(r"\b(?:between|both)\b", clause) or not _FINITE.search(clause):
+            continue  # "between V1 and V2", "the limit for V1 and V2 was": a pair, not two clauses
         then = bool(m.group("then")) or m.group().strip(", ") == "then"
         out.append(text[last : m.start()] + ". " + ("Then " if then else text[m.end()].upper()))
         last = m.end() + (0 if then else 1)
@@ -363,7 +373,12 @@ def aside_parenthesis(text: str) -> str:
     return _ASIDE.sub(lambda m: f"{m['name']} ({m['aside']}) ", text)
 
 
-_OF = re.compile(r"\b(?P<the>[Tt]he) (?P<part>" + _PARTS + r") of (?P<name>V\d)\b")
+_OF = re.compile(r"\b(?P<the>[Tt]he) (?P<part>" + _PARTS + r") of (?P<name>V\d)\b(?!,? \(?(?:an?|the) )")
+
+
+def driver_possessive(text: str) -> str:
+    """ "the driver of V1 steered" -> "V1's driver steered"."""
+    return re.sub(r"\b([Tt])he (driver|operator) of (V\d)\b(?!,? \(?(?:an?|the) )", lambda m: f"{m[3]}'s {m[2]}", text)
 
 
 def of_possessive(text: str) -> str:
@@ -411,6 +426,7 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "mph_first": mph_first,
     "aside_parenthesis": _through_v(aside_parenthesis),
     "of_possessive": _through_v(of_possessive),
+    "driver_possessive": _through_v(driver_possessive),
     "proceeding": proceeding,
 }
 

@@ -51,6 +51,23 @@ def without_non_impacts(sentence: str) -> str:
     return _NO_IMPACT.sub(" ", sentence)
 
 
+# Police forms' abbreviations of a direction of travel: "traveling N/B", "the S/B lanes", "EB on Main St" (in
+# capitals, a token of its own: "NB" in a sentence is no other word).
+_BOUND_SHORT = re.compile(r"(?<![\w/])([NSEW])(?:/B|\.B\.|B)(?![\w/])")
+_POINTS = {"N": "north", "S": "south", "E": "east", "W": "west"}
+
+
+_HANDED = re.compile(r"\b(left|right)[- ]hand(?=[- ]turn)", re.I)
+
+
+def spell_out(text: str) -> str:
+    """The report with its abbreviations written out, word for word ("N/B" -> "northbound"), so that every reader
+    reads one spelling."""
+    text = _BOUND_SHORT.sub(lambda m: _POINTS[m.group(1)] + "bound", text)
+    # "a left-hand turn" is a left turn: the hand says the side, as "left" alone does
+    return _HANDED.sub(r"\1", text)
+
+
 def normalize_names(text: str) -> str:
     """Rewrite every way of naming a vehicle as V1, V2, ... and pedestrians as P1, P2, ..."""
 
@@ -165,7 +182,7 @@ def prepare_report(text: str) -> Prepared:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
     that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
     the words each party numbered by rule was named by."""
-    labelled, note, words = parties(number_vehicles(text))
+    labelled, note, words = parties(number_vehicles(spell_out(text)))
     return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
 

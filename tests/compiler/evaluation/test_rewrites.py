@@ -4,7 +4,6 @@ keeps the rest, is deterministic, and leaves a text it does not fit unchanged.""
 from __future__ import annotations
 
 import pytest
-
 from sovarc.compiler.evaluation.rewrites import REWRITES, rewrite
 
 CASES = [
@@ -21,6 +20,9 @@ CASES = [
         "The right front of V2 contacted the left side of V1.",
     ),
     ("of_possessive", "The front of V1 struck the rear of V2.", "V1's front struck V2's rear."),
+    ("driver_possessive", "The driver of V1 steered left.", "V1's driver steered left."),
+    ("of_possessive", "It struck the left rear of V2, a parked van.", "It struck the left rear of V2, a parked van."),
+    ("split_and", "The limit for V1 and V2 was 45 mph.", "The limit for V1 and V2 was 45 mph."),
     ("speed_upper", "a limit of 48 kmph (30 mph)", "a limit of 48 KMPH (30 MPH)"),
     ("speed_words", "a limit of 48 km/h (30 mph)", "a limit of 48 kilometers per hour (30 miles per hour)"),
     ("speed_kph", "a limit of 48 KMPH (30 MPH)", "a limit of 48 kph (30 mph)"),

@@ -1,0 +1,105 @@
+"""Wordings the metamorphic benchmark (`benchmarks/bench_rewrites.py`) found the rules reading otherwise than the
+same fact said the usual way, each a general fact of English or of report writing, on reports written here:
+
+- a speed's unit said in words ("30 miles per hour", "48 kilometers per hour") or as "km/hr", "mi/h";
+- police forms' direction abbreviations ("traveling N/B", "the S/B lanes", "EB");
+- an aside in brackets describes as one between commas ("V2 (a 1998 Ford Taurus sedan)");
+- "a left-hand turn" is a left turn;
+- a course said as "in a northerly direction" between the verb of motion and the road.
+Each test also reads the usual wording, so it fails if the two readings part.
+"""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend.rules import extract
+from sovarc.dsl.ir import Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
+
+CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
+
+
+def _actions(text: str) -> dict[str, list[str]]:
+    s = extract(text, "t")
+    return {p.id: [] if isinstance(p.actions, Unknown) else [a.kind.value for a in p.actions] for p in s.participants}
+
+
+def _participant(text: str, pid: str) -> Participant:
+    return next(p for p in extract(text, "t").participants if p.id == pid)
+
+
+@pytest.mark.parametrize(
+    ("said", "limit"),
+    [
+        ("48 kmph (30 mph)", Speed(48, SpeedUnit.KMH)),
+        ("48 kilometers per hour (30 miles per hour)", Speed(48, SpeedUnit.KMH)),
+        ("48 kilometres per hour", Speed(48, SpeedUnit.KMH)),
+        ("48 km/hr (30 mi/h)", Speed(48, SpeedUnit.KMH)),
+        ("30 miles per hour", Speed(30, SpeedUnit.MPH)),
+        ("30 miles an hour", Speed(30, SpeedUnit.MPH)),
+    ],
+)
+def test_a_speed_limit_is_read_in_any_spelling_of_its_unit(said: str, limit: Speed) -> None:
+    text = f"The road had a posted speed limit of {said}. V1 was traveling north. V1 struck the rear of V2."
+    assert extract(text, "t").road.speed_limit == limit
+
+
+def test_a_bare_number_of_miles_is_no_speed() -> None:
+    text = "The road was posted. V1 had driven 30 miles that day. V1 was traveling north and struck the rear of V2."
+    assert isinstance(extract(text, "t").road.speed_limit, Unknown)
+
+
+@pytest.mark.parametrize(("short", "long"), [("N/B", "northbound"), ("S/B", "southbound"), ("EB", "eastbound")])
+def test_a_direction_abbreviated_as_police_forms_write_it_reads_as_written_out(short: str, long: str) -> None:
+    template = CROSS + "V1 was traveling {} in the {} lane. V2 was traveling west. The front of V2 struck V1."
+    spelled = extract(template.format(long, long), "t")
+    abbreviated = extract(template.format(short, short), "t")
+    assert _participant(template.format(short, short), "V1").heading == Heading(long.removesuffix("bound"))
+    assert abbreviated.participants == spelled.participants
+
+
+def test_a_capital_n_and_b_inside_a_word_or_a_name_is_no_direction() -> None:
+    text = "V1, a NB-2 model, was traveling east on Route NBA. V1 struck the rear of V2."
+    assert _participant(text, "V1").heading == Heading.EAST
+
+
+@pytest.mark.parametrize(
+    ("aside", "kind"),
+    [
+        ("(a 1998 Ford Taurus sedan)", VehicleKind.CAR),
+        ("( a 2004 Ford F-150 pickup )", VehicleKind.PICKUP),
+        ("(a 2010 Blue Bird school bus)", VehicleKind.BUS),
+    ],
+)
+def test_an_aside_in_brackets_names_the_kind_as_one_between_commas(aside: str, kind: VehicleKind) -> None:
+    text = CROSS + f"V1 was traveling north. V2 {aside} was traveling east. The front of V1 struck V2."
+    commas = CROSS + f"V1 was traveling north. V2, {aside.strip('() ')}, was traveling east. The front of V1 struck V2."
+    assert _participant(text, "V2").kind == kind == _participant(commas, "V2").kind
+
+
+@pytest.mark.parametrize("hand", ["left-hand", "left hand"])
+def test_a_left_hand_turn_is_a_left_turn(hand: str) -> None:
+    template = (
+        "The crash occurred on a four lane undivided road. V2 was traveling north when it stopped to let traffic "
+        "pass before proceeding to make an intended {} turn into a driveway. V1 was traveling north behind V2. "
+        "The front of V1 struck the rear of V2."
+    )
+    assert _actions(template.format(hand)) == _actions(template.format("left"))
+    made = CROSS + f"V1 was traveling north. V2 was traveling south and made a {hand} turn. V1 struck V2."
+    assert _actions(made)["V2"][-1] == "turn_left"
+
+
+def test_a_left_hand_turn_lane_is_a_left_turn_lane() -> None:
+    template = (
+        CROSS + "V1 was traveling north in the second {} turn lane. V1 made a left turn and struck V2, which was "
+        "traveling south."
+    )
+    assert _participant(template.format("left-hand"), "V1").lane == _participant(template.format("left"), "V1").lane
+
+
+def test_a_course_said_as_a_direction_between_the_verb_and_the_road_keeps_the_one_lane_road() -> None:
+    template = (
+        "The crash occurred at a T-intersection. V1 was traveling {} on the two-way roadway with one lane in "
+        "each direction. V2 was turning left out of a driveway. The front of V1 struck V2."
+    )
+    assert _participant(template.format("in a northerly direction"), "V1").lane == 1
+    assert _participant(template.format("north"), "V1").lane == 1
