@@ -386,6 +386,79 @@ def of_possessive(text: str) -> str:
     return _OF.sub(lambda m: f"{m['name']}'s {m['part']}", text)
 
 
+# ---- tense ------------------------------------------------------------------------------------------------
+# Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
+# past forms of the verbs crash narratives use, and their present (third person); a past participle after a
+# form of "be" or "have", an article or "to" stays ("was stopped", "a stopped car", "had slowed").
+_PRESENT = {
+    "was": "is",
+    "were": "are",
+    "had": "has",
+    "struck": "strikes",
+    "came": "comes",
+    "made": "makes",
+    "began": "begins",
+    "drove": "drives",
+    "saw": "sees",
+    "went": "goes",
+    "ran": "runs",
+    "stated": "states",
+    "turned": "turns",
+    "stopped": "stops",
+    "slowed": "slows",
+    "braked": "brakes",
+    "steered": "steers",
+    "swerved": "swerves",
+    "entered": "enters",
+    "accelerated": "accelerates",
+    "attempted": "attempts",
+    "started": "starts",
+    "changed": "changes",
+    "pulled": "pulls",
+    "backed": "backs",
+    "continued": "continues",
+    "passed": "passes",
+    "merged": "merges",
+    "approached": "approaches",
+    "impacted": "impacts",
+    "contacted": "contacts",
+    "proceeded": "proceeds",
+    "traveled": "travels",
+    "travelled": "travels",
+    "crossed": "crosses",
+    "failed": "fails",
+    "departed": "departs",
+    "rotated": "rotates",
+    "collided": "collides",
+    "occurred": "occurs",
+    "looked": "looks",
+    "yielded": "yields",
+    "moved": "moves",
+    "veered": "veers",
+}
+_PAST = re.compile(r"\b(?:" + "|".join(_PRESENT) + r")\b", re.I)
+_PARTICIPLE_AFTER = re.compile(
+    r"\b(?:was|were|is|are|be|been|being|had|has|have|a|an|the|to|not|just)\s+(?:\w+ly\s+)?$", re.I
+)
+
+
+def present_tense(text: str) -> str:
+    """ "V1 was traveling north when V2 turned left and struck V1" -> "V1 is traveling north when V2 turns left
+    and strikes V1"."""
+
+    def one(m: re.Match[str]) -> str:
+        word = m.group()
+        if _PARTICIPLE_AFTER.search(text[max(0, m.start() - 30) : m.start()]) and word.lower() not in (
+            "was",
+            "were",
+            "had",
+        ):
+            return word
+        return _case(word, _PRESENT[word.lower()])
+
+    return _PAST.sub(one, text)
+
+
 REWRITES: dict[str, Callable[[str], str]] = {
     "v_short": _renamed(lambda n: f"V{n}"),
     "vehicle_hash": _renamed(lambda n: f"Vehicle #{n}"),
@@ -415,6 +488,7 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "split_and": _through_v(split_and),
     "join_then": _through_v(join_then),
     "travelling": travelling,
+    "present_tense": present_tense,
     "turn_verb": turn_verb,
     "turn_noun": turn_noun,
     "turn_hand": turn_hand,

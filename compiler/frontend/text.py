@@ -68,6 +68,92 @@ def spell_out(text: str) -> str:
     return _HANDED.sub(r"\1", text)
 
 
+# A narrative told in the present says the same events as one told in the past ("V2 stops at the sign, then turns
+# left and strikes V1"). The readers read the past, so a crash narrative's verb in the third person present, right
+# after its subject (a participant, a pronoun, a part of a vehicle, or "and"/"then" going on with the subject), is
+# read as its past, word for word.
+_PAST_OF = {
+    "strikes": "struck",
+    "hits": "hit",
+    "comes": "came",
+    "makes": "made",
+    "begins": "began",
+    "drives": "drove",
+    "sees": "saw",
+    "goes": "went",
+    "runs": "ran",
+    "spins": "spun",
+    "loses": "lost",
+    "rear-ends": "rear-ended",
+    "sideswipes": "sideswiped",
+    "occurs": "occurred",
+    "happens": "happened",
+}
+_PAST_OF.update(
+    {
+        f"{stem}s": f"{stem}{'d' if stem.endswith('e') else 'ped' if stem == 'stop' else 'ed'}"
+        for stem in (
+            "turn",
+            "stop",
+            "slow",
+            "brake",
+            "steer",
+            "swerve",
+            "enter",
+            "accelerate",
+            "attempt",
+            "start",
+            "change",
+            "pull",
+            "back",
+            "continue",
+            "merge",
+            "impact",
+            "contact",
+            "travel",
+            "fail",
+            "depart",
+            "rotate",
+            "collide",
+            "yield",
+            "move",
+            "veer",
+            "exit",
+            "overcorrect",
+            "drift",
+            "observe",
+            "notice",
+            "decelerate",
+            "skid",
+        )
+    }
+)
+_PAST_OF.update({"passes": "passed", "approaches": "approached", "proceeds": "proceeded", "crosses": "crossed"})
+_VERBS_NOW = "|".join(sorted(_PAST_OF, key=len, reverse=True))
+_NOW = re.compile(
+    r"(\b(?:[VP]\d|he|she|it|they|and|then|vehicle|crash|collision)(?: then)? )(" + _VERBS_NOW + r")\b", re.I
+)
+# after a part ("its right front impacts") or a comma going on with the subject ("overcorrected, comes back"),
+# not a noun: "the front brakes", "two quarter turns, ..."
+_NOW_AFTER_PART = re.compile(
+    r"(\b(?:front|rear|side|bumper|corner|end|driver|operator)(?: then)? |, )"
+    r"(?!(?:brakes|stops|turns|impacts|backs)\b(?! (?:the|V\d|at|for|in|to|left|right)\b))(" + _VERBS_NOW + r")\b",
+    re.I,
+)
+# a strike said in the present passive: "its left side is struck by the front of V1"
+_IS_STRUCK = re.compile(r"\b(is|are)(?= (?:then )?(?:struck|hit|impacted|contacted|rear-ended|sideswiped|clipped)\b)")
+
+
+def in_past(text: str) -> str:
+    """The narrative with its present-tense verbs of the crash in the past (see above)."""
+
+    def past(m: re.Match[str]) -> str:
+        return m.group(1) + _PAST_OF[m.group(2).lower()]
+
+    text = _NOW_AFTER_PART.sub(past, _NOW.sub(past, text))
+    return _IS_STRUCK.sub(lambda m: "was" if m.group(1) == "is" else "were", text)
+
+
 def normalize_names(text: str) -> str:
     """Rewrite every way of naming a vehicle as V1, V2, ... and pedestrians as P1, P2, ..."""
 
@@ -183,6 +269,7 @@ def prepare_report(text: str) -> Prepared:
     that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
     the words each party numbered by rule was named by."""
     labelled, note, words = parties(number_vehicles(spell_out(text)))
+    labelled = in_past(labelled)
     return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
 

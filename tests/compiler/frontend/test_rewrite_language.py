@@ -5,7 +5,10 @@ same fact said the usual way, each a general fact of English or of report writin
 - police forms' direction abbreviations ("traveling N/B", "the S/B lanes", "EB");
 - an aside in brackets describes as one between commas ("V2 (a 1998 Ford Taurus sedan)");
 - "a left-hand turn" is a left turn;
-- a course said as "in a northerly direction" between the verb of motion and the road.
+- a course said as "in a northerly direction" between the verb of motion and the road;
+- a narrative told in the present ("V2 stops ... and strikes V1", "its left side is struck") says what one told in
+  the past does (a plural noun before "and" that looks like a verb, "signals and stops", is read as one: rare in a
+  narrative, and "got out and stops" is common).
 Each test also reads the usual wording, so it fails if the two readings part.
 """
 
@@ -13,6 +16,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend.rules import extract
+from sovarc.compiler.frontend.text import in_past
 from sovarc.dsl.ir import Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
 
 CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
@@ -103,3 +107,41 @@ def test_a_course_said_as_a_direction_between_the_verb_and_the_road_keeps_the_on
     )
     assert _participant(template.format("in a northerly direction"), "V1").lane == 1
     assert _participant(template.format("north"), "V1").lane == 1
+
+
+PAST = (
+    CROSS + "V1 was traveling north. V2 was traveling east. V2 stopped at the stop sign, then entered the intersection "
+    "and turned left. The front of V1 struck the left side of V2. V1 came to rest facing north."
+)
+PRESENT = (
+    CROSS + "V1 is traveling north. V2 is traveling east. V2 stops at the stop sign, then enters the intersection "
+    "and turns left. The front of V1 strikes the left side of V2. V1 comes to rest facing north."
+)
+
+
+def test_a_narrative_told_in_the_present_reads_as_told_in_the_past() -> None:
+    past, present = extract(PAST, "t"), extract(PRESENT, "t")
+    assert _actions(PRESENT) == _actions(PAST) == {"V1": ["follow_lane"], "V2": ["follow_lane", "stop", "turn_left"]}
+    assert (present.crash.type, present.crash.striker) == (past.crash.type, past.crash.striker)
+
+
+def test_a_strike_in_the_present_passive_reads_as_in_the_past() -> None:
+    template = CROSS + "V1 was traveling north. V2 turned left and its left side {} struck by the front of V1."
+    now, then = extract(template.format("is"), "t"), extract(template.format("was"), "t")
+    assert (now.crash.type, now.crash.striker) == (then.crash.type, then.crash.striker)
+    assert then.crash.striker == "V1"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The front brakes failed.",  # a noun after a part
+        "V1 made two quarter turns, stops included.",
+    ],
+)
+def test_nouns_that_look_like_present_verbs_are_left_alone(text: str) -> None:
+    assert in_past(text) == text
+
+
+def test_the_present_after_a_comma_going_on_with_the_subject_is_read_as_past() -> None:
+    assert in_past("V1 overcorrected, comes back across the lane") == "V1 overcorrected, came back across the lane"
