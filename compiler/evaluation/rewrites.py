@@ -386,6 +386,47 @@ def of_possessive(text: str) -> str:
     return _OF.sub(lambda m: f"{m['name']}'s {m['part']}", text)
 
 
+_EXECUTE = {"made": "executed", "make": "execute", "makes": "executes", "making": "executing"}
+
+
+def turn_executed(text: str) -> str:
+    """ "made a left turn" -> "executed a left turn"."""
+    return _MAKE_TURN.sub(
+        lambda m: f"{_case(m['verb'], _EXECUTE[m['verb'].lower()])} {m.group()[len(m['verb']) + 1 :]}", text
+    )
+
+
+def intending_on(text: str) -> str:
+    """ "intending to turn left" -> "intending on turning left", "intending to make" -> "intending on making"."""
+    return re.sub(
+        r"\b(intend(?:ing|ed)|planning) to (turn|make)\b",
+        lambda m: f"{m[1]} on {'turning' if m[2] == 'turn' else 'making'}",
+        text,
+    )
+
+
+# an impact said actively between two named sides: "the front of V1 struck the rear of V2"
+_ANY_NAME = (
+    r"(?:V(?:-| )?\d|(?i:vehicle)\s*(?:#\s*|(?i:no\.)\s*|(?i:number)\s+)?(?:\d|(?i:one|two|three|four|five|six))"
+    r"|(?i:unit)\s*#?\s*\d)(?![\w-])"
+)
+_SIDE_OF = r"(?:[Tt]he (?:[\w-]+ ){1,3}?of )?" + _ANY_NAME
+_ACTIVE = re.compile(r"(?P<a>" + _SIDE_OF + r") (?P<verb>struck|impacted|hit|contacted) (?P<b>" + _SIDE_OF + r")\b")
+
+
+def impact_passive(text: str) -> str:
+    """ "The front of V1 struck the rear of V2" -> "The rear of V2 was struck by the front of V1"."""
+
+    def one(m: re.Match[str]) -> str:
+        a, b = m["a"], m["b"]
+        start = m["a"][0].isupper() and m["a"].startswith("The")
+        b = b[0].upper() + b[1:] if start else b
+        a = a[0].lower() + a[1:] if a.startswith("The") else a
+        return f"{b} was {m['verb']} by {a}"
+
+    return _ACTIVE.sub(one, text)
+
+
 # ---- tense ------------------------------------------------------------------------------------------------
 # Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
 # past forms of the verbs crash narratives use, and their present (third person); a past participle after a
@@ -492,6 +533,9 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "turn_verb": turn_verb,
     "turn_noun": turn_noun,
     "turn_hand": turn_hand,
+    "turn_executed": turn_executed,
+    "intending_on": intending_on,
+    "impact_passive": impact_passive,  # (it swaps the names: each keeps its own words)
     "impact_collided": _through_v(impact_collided),
     "impact_impacted": _through_v(impact_impacted),
     "came_to_stop": _through_v(came_to_stop),
