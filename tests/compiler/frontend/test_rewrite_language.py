@@ -17,7 +17,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import in_past
-from sovarc.dsl.ir import Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
+from sovarc.dsl.ir import CrashType, Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
 
 CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
 
@@ -145,3 +145,19 @@ def test_nouns_that_look_like_present_verbs_are_left_alone(text: str) -> None:
 
 def test_the_present_after_a_comma_going_on_with_the_subject_is_read_as_past() -> None:
     assert in_past("V1 overcorrected, comes back across the lane") == "V1 overcorrected, came back across the lane"
+
+
+@pytest.mark.parametrize(
+    ("active", "passive"),
+    [
+        ("V1 struck V2 in the left side with its front.", "V2 was struck by V1 in the left side with its front."),
+        ("V2 impacted V1 on the right side with its front.", "V1 was impacted by V2 on the right side with its front."),
+        ("V1 struck V2 in the rear with its front.", "V2 was struck by V1 in the rear with its front."),
+    ],
+)
+def test_a_strike_said_in_the_passive_reads_as_said_in_the_active(active: str, passive: str) -> None:
+    # the part struck with is the striker's (the agent's); where it struck is on the one struck (the subject)
+    lead = CROSS + "V1 was traveling north. V2 was traveling east. "
+    said, turned = extract(lead + active, "t").crash, extract(lead + passive, "t").crash
+    assert (turned.type, turned.striker, turned.victim) == (said.type, said.striker, said.victim)
+    assert said.type in (CrashType.SIDE, CrashType.REAR_END)
