@@ -427,6 +427,40 @@ def impact_passive(text: str) -> str:
     return _ACTIVE.sub(one, text)
 
 
+def compass_was(text: str) -> str:
+    """ "V1 was traveling northbound" -> "V1 was northbound": the heading said as the vehicle's state."""
+    return re.sub(
+        r"\b(was|were) (?:travel(?:l)?ing|proceeding|heading|going|driving) (north|south|east|west)(?:bound)?"
+        r"\b(?![\w-])",
+        lambda m: f"{m[1]} {m[2]}bound",
+        text,
+    )
+
+
+def driver_number(text: str) -> str:
+    """ "the driver of V1 stopped" -> "Driver #1 stopped": police forms number the drivers as the vehicles."""
+    return _DRIVER_DOES.sub(lambda m: f"Driver #{m['name'][1:]} {m['then'] or ''}", text)
+
+
+def pronoun_subject(text: str) -> str:
+    """ "V2 stopped at the sign. V2 then turned left." -> "V2 stopped at the sign. It then turned left.": a
+    sentence whose subject is the last one's, when the last names no other participant."""
+    parts = _SENTENCE.split(text)
+    v = _renamed(lambda n: f"V{n}")
+    for i in range(1, len(parts)):
+        a = re.match(f"({_ANY_NAME}) ", parts[i - 1])
+        b = re.match(f"({_ANY_NAME}) (?!(?:was|is) an? )", parts[i])
+        if a and b and v(a[1]) == v(b[1]) and {v(n) for n in re.findall(_ANY_NAME, parts[i - 1])} == {v(a[1])}:
+            parts[i] = "It " + parts[i][b.end() :]
+    return " ".join(parts) if any(p.startswith("It ") for p in parts) else text
+
+
+def semicolons(text: str) -> str:
+    """ "V1 was traveling north. V2 was traveling east." -> "V1 was traveling north; V2 was traveling east.": two
+    sentences about the participants as one, parted by a semicolon."""
+    return re.sub(r"\.\s+(?=V\d\b)", "; ", text)
+
+
 # ---- tense ------------------------------------------------------------------------------------------------
 # Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
 # past forms of the verbs crash narratives use, and their present (third person); a past participle after a
@@ -518,6 +552,7 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "compass_heading": _course(lambda p: p, verb="heading"),
     "compass_direction": _course(lambda p: f"in {'an' if p[0] in 'aeiou' else 'a'} {p}erly direction"),
     "compass_abbreviated": compass_abbreviated,
+    "compass_was": compass_was,
     "lane_digit": _lane_number(str),
     "lane_hash": _lane_number(lambda n: f"#{n}"),
     "lane_word": _lane_number(lambda n: _WORDS[n]),
@@ -526,6 +561,9 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "count_words": count_words,
     "driver_of": _through_v(driver_of),
     "driver_dropped": _through_v(driver_dropped),
+    "driver_number": _through_v(driver_number),
+    "pronoun_subject": pronoun_subject,  # (it drops names: the others keep their own words)
+    "semicolons": _through_v(semicolons),
     "split_and": _through_v(split_and),
     "join_then": _through_v(join_then),
     "travelling": travelling,

@@ -262,6 +262,10 @@ def read_sentence(
     backing at the impact, which lead with their rear (see `_backed`)."""
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
+    # A sentence opening on a pronoun is about the one it carries on with ("V1 stopped. It then proceeded to turn
+    # and struck V2"): the pronoun is that participant, the subject of every verb it heads.
+    if carry is not None and (opening := re.match(r"(?:It|He|She)\b(?!')", sentence)):
+        sentence = carry + sentence[opening.end() :]
     # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
     first = re.search(r"\b" + _V + r"\b", sentence)
     pronoun = re.search(r"\b(?:it|he|she|its|his|her|it's)\b", sentence, re.I)

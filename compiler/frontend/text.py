@@ -19,6 +19,10 @@ _VEHICLE = re.compile(
     r"(?![\w-]))",
     re.IGNORECASE,
 )
+# Police forms number the drivers as their vehicles: "Driver #1", "Driver 2", "driver one" is the driver of V1.
+_DRIVER = re.compile(
+    r"\b([Dd])river\s*(?:#\s*|no\.\s*|number\s+)?(\d|one|two|three|four|five)(?![\w-])(?!\s*(?:years?|mph)\b)"
+)
 _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A group of pedestrians counted, not numbered: "struck three pedestrians" is three road users.
 _PEDESTRIAN_GROUP = re.compile(r"\b(two|three|four|five) pedestrians\b", re.IGNORECASE)
@@ -191,7 +195,11 @@ def number_vehicles(text: str) -> str:
         raw = (m.group(1) or m.group(2)).lower()
         return f"V{_NUMBER_WORDS.get(raw, raw)}"
 
-    return _VEHICLE.sub(vehicle, text)
+    def driver(m: re.Match[str]) -> str:
+        raw = m.group(2).lower()
+        return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{_NUMBER_WORDS.get(raw, raw)}"
+
+    return _DRIVER.sub(driver, _VEHICLE.sub(vehicle, text))
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend.rules import extract
-from sovarc.compiler.frontend.text import in_past
+from sovarc.compiler.frontend.text import in_past, normalize_names
 from sovarc.dsl.ir import CrashType, Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
 
 CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
@@ -161,3 +161,37 @@ def test_a_strike_said_in_the_passive_reads_as_said_in_the_active(active: str, p
     said, turned = extract(lead + active, "t").crash, extract(lead + passive, "t").crash
     assert (turned.type, turned.striker, turned.victim) == (said.type, said.striker, said.victim)
     assert said.type in (CrashType.SIDE, CrashType.REAR_END)
+
+
+SENTENCES = (
+    CROSS + "V1 was traveling north. V2 was traveling east and stopped at the stop sign. V2 entered the intersection. "
+    "The front of V1 struck the left side of V2. V1 continued across the intersection and came to rest."
+)
+
+
+def test_clauses_parted_by_a_semicolon_read_as_sentences() -> None:
+    # (what V1 did after the impact is no move of its crash, in either)
+    joined = SENTENCES.replace(". V", "; V").replace(". The front", "; the front")
+    assert _actions(joined) == _actions(SENTENCES)
+    said, semi = extract(SENTENCES, "t").crash, extract(joined, "t").crash
+    assert (semi.type, semi.striker, semi.victim) == (said.type, said.striker, said.victim)
+
+
+def test_a_sentence_opening_on_a_pronoun_is_about_the_one_it_carries_on_with() -> None:
+    named = CROSS + "V2 was traveling south. V1 stopped at the sign. V1 proceeded to turn left and struck V2."
+    pronoun = CROSS + "V2 was traveling south. V1 stopped at the sign. It proceeded to turn left and struck V2."
+    assert extract(pronoun, "t").crash.striker == extract(named, "t").crash.striker == "V1"
+
+
+@pytest.mark.parametrize("driver", ["Driver #1", "Driver 1", "Driver one", "Driver No. 1"])
+def test_a_numbered_driver_is_the_driver_of_that_vehicle(driver: str) -> None:
+    template = (
+        "The crash occurred on a straight road. V1 and V2 were traveling west. The vehicle in front of V1 slowed "
+        "and {} steered left, and its right front made contact with the front right of V2."
+    )
+    got, want = extract(template.format(driver), "t").crash, extract(template.format("the driver of V1"), "t").crash
+    assert (got.type, got.striker, got.victim) == (want.type, want.striker, want.victim)
+
+
+def test_a_driver_of_so_many_years_is_no_numbered_driver() -> None:
+    assert "V2" not in normalize_names("The driver 2 years ago was V1.")
