@@ -461,6 +461,18 @@ def semicolons(text: str) -> str:
     return re.sub(r"\.\s+(?=V\d\b)", "; ", text)
 
 
+# ---- the road's words ------------------------------------------------------------------------------------------
+def junction(text: str) -> str:
+    """ "intersection" -> "junction", "T-intersection" -> "T-junction": the British word for the same place."""
+    return re.sub(r"\b([Ii])ntersection(s?)\b", lambda m: ("J" if m[1] == "I" else "j") + "unction" + m[2], text)
+
+
+def signal_light(text: str) -> str:
+    """ "traffic signal" -> "traffic light", "signal-controlled" -> "light-controlled"."""
+    text = re.sub(r"\b([Tt]raffic) signal(s?)\b", r"\1 light\2", text)
+    return re.sub(r"\bsignal-controlled\b", "light-controlled", text)
+
+
 # ---- tense ------------------------------------------------------------------------------------------------
 # Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
 # past forms of the verbs crash narratives use, and their present (third person); a past participle after a
@@ -584,6 +596,8 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "of_possessive": _through_v(of_possessive),
     "driver_possessive": _through_v(driver_possessive),
     "proceeding": proceeding,
+    "junction": junction,
+    "signal_light": signal_light,
 }
 
 

@@ -191,7 +191,8 @@ def read_road_kind(text: str) -> tuple[RoadKind, tuple[int, int] | None]:
     low = text.lower()
     if m := re.search(r"\b['\"]?[ty]['\"]?[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg", low):
         return RoadKind.T_JUNCTION, m.span()
-    if m := re.search(r"\bintersection\b|\bintersecting\b", low):
+    # (a "non-intersection" or "non-junction" road is one away from any junction, as crash databases code it)
+    if m := re.search(r"(?<!non-)(?<!non )\bintersection\b|\bintersecting\b", low):
         return RoadKind.INTERSECTION, m.span()
     return RoadKind.STRAIGHT, None
 

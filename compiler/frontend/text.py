@@ -61,6 +61,7 @@ _BOUND_SHORT = re.compile(r"(?<![\w/])([NSEW])(?:/B|\.B\.|B)(?![\w/])")
 _POINTS = {"N": "north", "S": "south", "E": "east", "W": "west"}
 
 
+_JUNCTION = re.compile(r"\b([Jj]unction|[Cc]rossroads)(s?)\b(?! box)")
 _HANDED = re.compile(r"\b(left|right)[- ]hand(?=[- ]turn)", re.I)
 
 
@@ -69,7 +70,9 @@ def spell_out(text: str) -> str:
     reads one spelling."""
     text = _BOUND_SHORT.sub(lambda m: _POINTS[m.group(1)] + "bound", text)
     # "a left-hand turn" is a left turn: the hand says the side, as "left" alone does
-    return _HANDED.sub(r"\1", text)
+    text = _HANDED.sub(r"\1", text)
+    # "a T-junction", "the junction", "a crossroads": British English for the intersection
+    return _JUNCTION.sub(lambda m: ("I" if m[1] in "JC" else "i") + "ntersection" + ("s" if m[2] else ""), text)
 
 
 # A narrative told in the present says the same events as one told in the past ("V2 stops at the sign, then turns

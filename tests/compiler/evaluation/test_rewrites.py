@@ -74,6 +74,8 @@ CASES = [
     ("turn_verb", "V2 made a left turn after making a right-hand turn.", "V2 turned left after turning right."),
     ("turn_noun", "V2 turned left, intending to turn right.", "V2 made a left turn, intending to make a right turn."),
     ("turn_hand", "V2 made a left turn.", "V2 made a left-hand turn."),
+    ("junction", "Intersections: a T-intersection.", "Junctions: a T-junction."),
+    ("signal_light", "a traffic signal-controlled crossing", "a traffic light-controlled crossing"),
     ("compass_was", "V1 was traveling northbound and V2 was heading west.", "V1 was northbound and V2 was westbound."),
     ("driver_number", "The driver of V2 then stopped.", "Driver #2 then stopped."),
     ("pronoun_subject", "V2 stopped at the sign. V2 then turned left.", "V2 stopped at the sign. It then turned left."),

@@ -17,7 +17,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import in_past, normalize_names
-from sovarc.dsl.ir import CrashType, Heading, Participant, Speed, SpeedUnit, Unknown, VehicleKind
+from sovarc.dsl.ir import CrashType, Heading, Participant, RoadKind, Speed, SpeedUnit, Unknown, VehicleKind
 
 CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
 
@@ -195,3 +195,23 @@ def test_a_numbered_driver_is_the_driver_of_that_vehicle(driver: str) -> None:
 
 def test_a_driver_of_so_many_years_is_no_numbered_driver() -> None:
     assert "V2" not in normalize_names("The driver 2 years ago was V1.")
+
+
+@pytest.mark.parametrize(
+    ("british", "american"),
+    [
+        ("at a four-way junction", "at a four-way intersection"),
+        ("at a crossroads", "at an intersection"),
+        ("at a T-junction", "at a T-intersection"),
+    ],
+)
+def test_a_junction_is_an_intersection(british: str, american: str) -> None:
+    template = "The crash occurred {}. V1 was traveling north. V2 was traveling east. The front of V1 struck V2."
+    assert extract(template.format(british), "t").road.kind == extract(template.format(american), "t").road.kind
+    assert extract(template.format(british), "t").road.kind != RoadKind.STRAIGHT
+
+
+@pytest.mark.parametrize("place", ["a non-junction roadway", "a non-intersection roadway", "a non intersection area"])
+def test_a_road_away_from_any_junction_is_no_intersection(place: str) -> None:
+    text = f"The crash occurred on {place}. V1 was traveling north. The front of V1 struck the rear of V2."
+    assert extract(text, "t").road.kind == RoadKind.STRAIGHT
