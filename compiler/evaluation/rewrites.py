@@ -473,6 +473,26 @@ def signal_light(text: str) -> str:
     return re.sub(r"\bsignal-controlled\b", "light-controlled", text)
 
 
+_BRITISH = {"curb": "kerb", "maneuver": "manoeuvre", "center": "centre", "gray": "grey", "tire": "tyre"}
+
+
+def british_spelling(text: str) -> str:
+    """ "the curb lane", "the center line", "maneuvered" -> "the kerb lane", "the centre line", "manoeuvred"."""
+
+    def one(m: re.Match[str]) -> str:
+        word, end = _BRITISH[m[1].lower()], m[2] or ""
+        if m[1].lower() == "maneuver" and end in ("ed", "ing"):
+            return _case(m[1], word[:-1]) + end  # manoeuvred, manoeuvring
+        return _case(m[1], word) + end
+
+    return re.sub(r"\b(curb|maneuver|center|gray|tire)(s|ed|ing)?\b", one, text, flags=re.I)
+
+
+def carriageway(text: str) -> str:
+    """ "the roadway" -> "the carriageway": the British word for the road's travelled way."""
+    return re.sub(r"\b([Rr])oadway(s?)\b", lambda m: ("C" if m[1] == "R" else "c") + "arriageway" + m[2], text)
+
+
 # ---- tense ------------------------------------------------------------------------------------------------
 # Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
 # past forms of the verbs crash narratives use, and their present (third person); a past participle after a
@@ -598,6 +618,8 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "proceeding": proceeding,
     "junction": junction,
     "signal_light": signal_light,
+    "british_spelling": british_spelling,
+    "carriageway": carriageway,
 }
 
 

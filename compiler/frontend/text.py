@@ -10,6 +10,7 @@ from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.sentences import sentences
+from sovarc.compiler.frontend.spelling import spell_out
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
 
@@ -53,26 +54,6 @@ def without_non_impacts(sentence: str) -> str:
     """The sentence with the impact words that say no participants met blanked: a crash avoided, denied, or
     named only as the scene or the time."""
     return _NO_IMPACT.sub(" ", sentence)
-
-
-# Police forms' abbreviations of a direction of travel: "traveling N/B", "the S/B lanes", "EB on Main St" (in
-# capitals, a token of its own: "NB" in a sentence is no other word).
-_BOUND_SHORT = re.compile(r"(?<![\w/])([NSEW])(?:/B|\.B\.|B)(?![\w/])")
-_POINTS = {"N": "north", "S": "south", "E": "east", "W": "west"}
-
-
-_JUNCTION = re.compile(r"\b([Jj]unction|[Cc]rossroads)(s?)\b(?! box)")
-_HANDED = re.compile(r"\b(left|right)[- ]hand(?=[- ]turn)", re.I)
-
-
-def spell_out(text: str) -> str:
-    """The report with its abbreviations written out, word for word ("N/B" -> "northbound"), so that every reader
-    reads one spelling."""
-    text = _BOUND_SHORT.sub(lambda m: _POINTS[m.group(1)] + "bound", text)
-    # "a left-hand turn" is a left turn: the hand says the side, as "left" alone does
-    text = _HANDED.sub(r"\1", text)
-    # "a T-junction", "the junction", "a crossroads": British English for the intersection
-    return _JUNCTION.sub(lambda m: ("I" if m[1] in "JC" else "i") + "ntersection" + ("s" if m[2] else ""), text)
 
 
 # A narrative told in the present says the same events as one told in the past ("V2 stops at the sign, then turns

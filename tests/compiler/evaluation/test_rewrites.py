@@ -75,6 +75,12 @@ CASES = [
     ("turn_noun", "V2 turned left, intending to turn right.", "V2 made a left turn, intending to make a right turn."),
     ("turn_hand", "V2 made a left turn.", "V2 made a left-hand turn."),
     ("junction", "Intersections: a T-intersection.", "Junctions: a T-junction."),
+    (
+        "british_spelling",
+        "V1 maneuvered over the center line to the curb.",
+        "V1 manoeuvred over the centre line to the kerb.",
+    ),
+    ("carriageway", "The roadway had two roadways.", "The carriageway had two carriageways."),
     ("signal_light", "a traffic signal-controlled crossing", "a traffic light-controlled crossing"),
     ("compass_was", "V1 was traveling northbound and V2 was heading west.", "V1 was northbound and V2 was westbound."),
     ("driver_number", "The driver of V2 then stopped.", "Driver #2 then stopped."),

@@ -15,9 +15,11 @@ Each test also reads the usual wording, so it fails if the two readings part.
 from __future__ import annotations
 
 import pytest
+from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.rules import extract
 from sovarc.compiler.frontend.text import in_past, normalize_names
 from sovarc.dsl.ir import CrashType, Heading, Participant, RoadKind, Speed, SpeedUnit, Unknown, VehicleKind
+from sovarc.dsl.span import Source
 
 CROSS = "The crash occurred at a four-leg intersection controlled by stop signs. "
 
@@ -215,3 +217,34 @@ def test_a_junction_is_an_intersection(british: str, american: str) -> None:
 def test_a_road_away_from_any_junction_is_no_intersection(place: str) -> None:
     text = f"The crash occurred on {place}. V1 was traveling north. The front of V1 struck the rear of V2."
     assert extract(text, "t").road.kind == RoadKind.STRAIGHT
+
+
+def test_a_carriageway_is_a_roadway() -> None:
+    template = (
+        "The crash occurred on a two lane undivided {}. V1 was traveling west on the {}. V1 crossed over the left "
+        "lane line and its front struck the front of V2, which was traveling east."
+    )
+    got = extract(template.format("carriageway", "carriageway"), "t")
+    want = extract(template.format("roadway", "roadway"), "t")
+    assert (got.road.lanes, got.participants) == (want.road.lanes, want.participants)
+
+
+def test_evidence_of_a_respelt_report_quotes_its_own_words() -> None:
+    # a report that respells throughout, its opening repeated at its end (as some database exports are), still
+    # aligns word for word: each fact quotes the report, never the respelling
+    opening = (
+        "This crash occurred on a two lane undivided carriageway slightly curving to the left with no grade and a "
+        "posted speed limit of 72KMPH (45MPH). This crash occurred on a weekday afternoon."
+    )
+    text = (
+        opening + "Vehicle #1, a 1988 Ford Mustang, was traveling westbound on the two lane undivided carriageway when "
+        "it observed Vehicle #2, a motorcycle, in its westbound lane traveling east. Vehicle #1 crossed over the left "
+        "lane line into the eastbound lane. The motorcycle returned to its original eastbound lane whereupon Vehicle "
+        "#1 impacted with Vehicle #2 with its front. Vehicle #2 came to rest in the center of the carriageway, facing "
+        "eastward." + opening
+    )
+    scenario = FrontEnd("none").extract(Source("respelt.txt", text)).scenario
+    assert scenario.provenance is not None
+    quotes = {e.fact: e.quote for e in scenario.provenance.evidence}
+    assert "westbound" in quotes["V1.heading"]
+    assert all(e.quote == text[e.start : e.end] for e in scenario.provenance.evidence)
