@@ -44,6 +44,8 @@ def _read(front_end: FrontEnd, name: str, text: str) -> tuple[Scenario | None, s
         scenario = front_end.extract(Source(f"{name.replace('/', '_')}.txt", text)).scenario
     except FrontEndError as e:
         return None, f"refused: {e}\n"
+    except Exception as e:  # an internal error on a rewritten report is a finding, not a reason to stop
+        return None, f"internal error: {type(e).__name__}: {e}\n"
     return scenario, to_text(replace(scenario, provenance=None))
 
 

@@ -439,7 +439,12 @@ def compass_was(text: str) -> str:
 
 def driver_number(text: str) -> str:
     """ "the driver of V1 stopped" -> "Driver #1 stopped": police forms number the drivers as the vehicles."""
-    return _DRIVER_DOES.sub(lambda m: f"Driver #{m['name'][1:]} {m['then'] or ''}", text)
+    v = _renamed(lambda n: f"V{n}")
+    return re.sub(
+        r"\b[Tt]he (?:driver|operator) of (" + _ANY_NAME + r") (then )?(?=" + _DRIVE + ")",
+        lambda m: f"Driver #{v(m[1])[1:]} {m[2] or ''}",
+        text,
+    )
 
 
 def pronoun_subject(text: str) -> str:
@@ -593,7 +598,7 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "count_words": count_words,
     "driver_of": _through_v(driver_of),
     "driver_dropped": _through_v(driver_dropped),
-    "driver_number": _through_v(driver_number),
+    "driver_number": driver_number,  # (it drops a name: the others keep their own words)
     "pronoun_subject": pronoun_subject,  # (it drops names: the others keep their own words)
     "semicolons": _through_v(semicolons),
     "split_and": _through_v(split_and),
@@ -621,6 +626,25 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "british_spelling": british_spelling,
     "carriageway": carriageway,
 }
+
+
+def _chain(*names: str) -> Callable[[str], str]:
+    def run(text: str) -> str:
+        for name in names:
+            text = REWRITES[name](text)
+        return text
+
+    return run
+
+
+# Writers, not words: several variations at once, as one writer's habits come together in a report.
+REWRITES["writer_police"] = _chain(
+    "unit", "compass_abbreviated", "mph_only", "driver_number", "lane_hash", "count_digits", "present_tense"
+)
+REWRITES["writer_british"] = _chain(
+    "vehicle_number", "speed_words", "carriageway", "junction", "british_spelling", "travelling", "compass_direction"
+)
+REWRITES["writer_terse"] = _chain("v_dash", "speed_upper", "compass_was", "pronoun_subject", "semicolons", "turn_verb")
 
 
 def rewrite(name: str, text: str) -> str:

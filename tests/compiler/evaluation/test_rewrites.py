@@ -76,6 +76,21 @@ CASES = [
     ("turn_hand", "V2 made a left turn.", "V2 made a left-hand turn."),
     ("junction", "Intersections: a T-intersection.", "Junctions: a T-junction."),
     (
+        "writer_police",
+        "The driver of V1 stopped at the two-lane road. V1 was traveling northbound in lane one at 48 kmph (30 mph).",
+        "Driver #1 stops at the 2-lane road. Unit 1 is traveling N/B in lane #1 at 30 mph.",
+    ),
+    (
+        "writer_british",
+        "V1 was traveling northbound on the roadway at the intersection, at 30 mph.",
+        "Vehicle 1 was travelling in a northerly direction on the carriageway at the junction, at 30 miles per hour.",
+    ),
+    (
+        "writer_terse",
+        "V1 was traveling north at 30 mph. V1 made a left turn. V2 stopped.",
+        "V-1 was northbound at 30 MPH. It turned left; V-2 stopped.",
+    ),
+    (
         "british_spelling",
         "V1 maneuvered over the center line to the curb.",
         "V1 manoeuvred over the centre line to the kerb.",
