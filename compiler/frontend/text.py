@@ -60,63 +60,17 @@ def without_non_impacts(sentence: str) -> str:
 # left and strikes V1"). The readers read the past, so a crash narrative's verb in the third person present, right
 # after its subject (a participant, a pronoun, a part of a vehicle, or "and"/"then" going on with the subject), is
 # read as its past, word for word.
-_PAST_OF = {
-    "strikes": "struck",
-    "hits": "hit",
-    "comes": "came",
-    "makes": "made",
-    "begins": "began",
-    "drives": "drove",
-    "sees": "saw",
-    "goes": "went",
-    "runs": "ran",
-    "spins": "spun",
-    "loses": "lost",
-    "rear-ends": "rear-ended",
-    "sideswipes": "sideswiped",
-    "occurs": "occurred",
-    "happens": "happened",
-}
-_PAST_OF.update(
-    {
-        f"{stem}s": f"{stem}{'d' if stem.endswith('e') else 'ped' if stem == 'stop' else 'ed'}"
-        for stem in (
-            "turn",
-            "stop",
-            "slow",
-            "brake",
-            "steer",
-            "swerve",
-            "enter",
-            "accelerate",
-            "attempt",
-            "start",
-            "change",
-            "pull",
-            "back",
-            "continue",
-            "merge",
-            "impact",
-            "contact",
-            "travel",
-            "fail",
-            "depart",
-            "rotate",
-            "collide",
-            "yield",
-            "move",
-            "veer",
-            "exit",
-            "overcorrect",
-            "drift",
-            "observe",
-            "notice",
-            "decelerate",
-            "skid",
-        )
-    }
+_IRREGULAR = (
+    "strikes struck hits hit comes came makes made begins began drives drove sees saw goes went runs ran "
+    "spins spun loses lost rear-ends rear-ended sideswipes sideswiped occurs occurred happens happened passes passed "
+    "approaches approached proceeds proceeded crosses crossed"
 )
-_PAST_OF.update({"passes": "passed", "approaches": "approached", "proceeds": "proceeded", "crosses": "crossed"})
+_REGULAR = (
+    "turn stop slow brake steer swerve enter accelerate attempt start change pull back continue merge impact contact "
+    "travel fail depart rotate collide yield move veer exit overcorrect drift observe notice decelerate skid"
+)
+_PAST_OF = dict(zip(_IRREGULAR.split()[::2], _IRREGULAR.split()[1::2], strict=True))
+_PAST_OF.update({f"{v}s": f"{v}{'d' if v.endswith('e') else 'ped' if v == 'stop' else 'ed'}" for v in _REGULAR.split()})
 _VERBS_NOW = "|".join(sorted(_PAST_OF, key=len, reverse=True))
 _NOW = re.compile(
     r"(\b(?:[VP]\d|he|she|it|they|and|then|vehicle|crash|collision)(?: then)? )(" + _VERBS_NOW + r")\b", re.I
