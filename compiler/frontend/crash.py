@@ -71,6 +71,9 @@ _AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bb
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended)\b", re.I)
+_PATIENT = re.compile(
+    r"\b(?P<v>" + _V + r")\b (?:was|were) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended) by [^.;,]*$", re.I
+)
 _REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?:the )?" + _STATE + r"(?P<b>" + _V + r")\b", re.I)
 _UNTIED_PART = re.compile(r"\b(?:front|rear|side|bumper|corner|end)\b", re.I)
 _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
@@ -144,12 +147,21 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
                 r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I
             ):
                 continue
+            who = m.group("v")
+            # "V2 was struck by V1 in the left side": where a passive's agent struck is on the one struck
+            by = pattern is _OWNED[2] and re.search(r"\bby $", sentence[: m.start()])
+            if by and (patient := _PATIENT.search(sentence[: m.start()])):
+                who = patient.group("v")
             if (kind := _kind(m.group("part"))) is not None:
-                parts.append((m.start(), m.group("v"), kind))
+                parts.append((m.start(), who, kind))
+    agent = _AGENT.search(sentence) or _AGENT_OWNED.search(sentence)
     for m in _OWN_PART.finditer(sentence):
         kind = _kind(m.group("part") or m.group("part2"))
-        if subject is not None and kind is not None:
-            parts.append((m.start(), subject, kind))
+        # "V2 was struck by V1 in the left side with its front": what a strike is made with is the striker's, and
+        # a passive names the striker as its agent
+        owner = agent.group("v") if agent and m.group("part") and agent.end() <= m.start() else subject
+        if owner is not None and kind is not None:
+            parts.append((m.start(), owner, kind))
     for m in _OBJECT_ITS.finditer(sentence):
         # "V2 ... made contact with its front passenger side": "its" is the other one named, not the subject
         # (the subject of the contact is the last one named before it as a subject: not "V1" in "V2 reversed
@@ -266,6 +278,10 @@ def read_sentence(
     backing at the impact, which lead with their rear (see `_backed`)."""
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
+    # A sentence opening on a pronoun is about the one it carries on with ("V1 stopped. It then proceeded to turn
+    # and struck V2"): the pronoun is that participant, the subject of every verb it heads.
+    if carry is not None and (opening := re.match(r"(?:It|He|She)\b(?!')", sentence)):
+        sentence = carry + sentence[opening.end() :]
     # Whom "it", "its" and "with its front" mean: the first one named, unless a pronoun comes before it.
     first = re.search(r"\b" + _V + r"\b", sentence)
     pronoun = re.search(r"\b(?:it|he|she|its|his|her|it's)\b", sentence, re.I)

@@ -13,6 +13,7 @@ import difflib
 import re
 from dataclasses import replace
 
+from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.dsl.explain import check_evidence
 from sovarc.dsl.ir import FACT_PATH, Evidence, Reader, Scenario, Unknown
 
@@ -35,12 +36,16 @@ class Alignment:
         self.first: list[int | None] = [None] * len(read)
         self.last: list[int | None] = [None] * len(read)
         words = [read[s:e] for s, e in ours]
-        matcher = difflib.SequenceMatcher(None, words, [report[s:e] for s, e in theirs], autojunk=False)
+        # words compare by their respelling, so a report that writes "carriageway" or "N/B" throughout aligns
+        # word for word with the text read, which says "roadway" and "northbound"
+        matcher = difflib.SequenceMatcher(None, words, [spell_out(report[s:e]) for s, e in theirs], autojunk=False)
         for op, i1, i2, j1, j2 in matcher.get_opcodes():
             if op == "equal":
-                for (s, e), (t, _) in zip(ours[i1:i2], theirs[j1:j2], strict=True):
+                for (s, e), (t, u) in zip(ours[i1:i2], theirs[j1:j2], strict=True):
                     for c in range(s, e):
-                        self.first[c], self.last[c] = t + c - s, t + c - s + 1
+                        # (a word respelt stands whole for the report's: "roadway" for "carriageway")
+                        same = e - s == u - t
+                        self.first[c], self.last[c] = (t + c - s, t + c - s + 1) if same else (t, u)
             elif op == "replace" and "".join(words[i1:i2]) == "".join(report[t:u] for t, u in theirs[j1:j2]):
                 # the same characters, split otherwise ("flow. V1" for "flow.V1"): character for character
                 ours_chars = [c for s, e in ours[i1:i2] for c in range(s, e)]

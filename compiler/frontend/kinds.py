@@ -41,7 +41,8 @@ _HEADS: tuple[tuple[VehicleKind, str], ...] = (
 _HEAD = [(kind, re.compile(r"\b(?:" + pattern + r")\b(?![\w-])", re.I)) for kind, pattern in _HEADS]
 # "V2, a 2004 Ford F-150 pickup", "V1 was a 2-door Honda motorcycle", "V2 (a 2010 Blue Bird school bus)": the
 # words after the number up to where the phrase ends (punctuation, a relative pronoun or a verb of its own).
-_APPOSITIVE = re.compile(r"\b(V\d)(?:,|\s*\(| was| is|,? which was) (?:(?:an?|the|one) )?")
+# (an aside in brackets describes as one between commas: "(a 1998 Ford Taurus)", "( a van )")
+_APPOSITIVE = re.compile(r"\b(V\d)(?:, |\s*\(\s*| was | is |,? which was )(?:(?:an?|the|one) )?")
 _PHRASE_END = re.compile(
     r"[,.;:()]|\b(?:that|which|who|was|were|is|driven|operated|traveling|travelling|with|and)\b", re.I
 )

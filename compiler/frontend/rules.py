@@ -77,7 +77,17 @@ _LIT = r"\b(?:dark,? but (?:lighted|lit)|lighted|street ?lights?|street lamps?|l
 _DAYLIGHT = r"\bdaylight\b|\bdaytime\b"
 _DAY = r"\b(?:morning|afternoon|noon|midday|mid-day)\b|\bduring the day\b|\bsunny\b"
 
-_SPEED = re.compile(r"(\d{2,3})\s*-?\s*(km/?h|kmph|kph|mph)\b", re.IGNORECASE)
+# a speed's unit abbreviated or said in words: "48 KMPH", "48 km/hr", "30 mi/h", "30 miles per hour"
+_SPEED = re.compile(
+    r"(\d{2,3})\s*-?\s*(km/?hr?|kmph|kph|kilomet(?:er|re)s? (?:per|an) hour|mph|mi/h|miles (?:per|an) hour)\b",
+    re.IGNORECASE,
+)
+
+
+def _miles(unit: str) -> bool:
+    return unit.lower().startswith("m")
+
+
 _HEADING = re.compile(r"\b(north|east|south|west)(?:bound|ward|erly)?\b", re.IGNORECASE)
 
 
@@ -122,7 +132,7 @@ def extract_environment(text: str) -> Environment:
 def first_speed(text: str) -> Speed | Unknown:
     """The first speed stated; in km/h when both units are given (the ground truth's convention)."""
     found = [(int(v), u.lower()) for v, u in _SPEED.findall(text)]
-    metric = [v for v, u in found if u != "mph"]
+    metric = [v for v, u in found if not _miles(u)]
     if metric:
         return Speed(metric[0], SpeedUnit.KMH)
     return Speed(found[0][0], SpeedUnit.MPH) if found else UNKNOWN
@@ -135,7 +145,7 @@ def read_speed_limit(text: str) -> tuple[Speed | Unknown, int]:
     for i, sentence in enumerate(sentences(text)):
         if re.search(r"speed limits?|posted|limit|designated", sentence, re.IGNORECASE):  # "designated 104 kmph"
             found = [(int(v), u.lower()) for v, u in _SPEED.findall(sentence)]
-            metric = [Speed(v, SpeedUnit.KMH) for v, u in found if u != "mph"]
+            metric = [Speed(v, SpeedUnit.KMH) for v, u in found if not _miles(u)]
             limits += [(limit, i) for limit in metric or [Speed(v, SpeedUnit.MPH) for v, u in found]]
     return min(limits, key=lambda li: li[0].to_mps()) if limits else (UNKNOWN, -1)
 
@@ -181,7 +191,8 @@ def read_road_kind(text: str) -> tuple[RoadKind, tuple[int, int] | None]:
     low = text.lower()
     if m := re.search(r"\b['\"]?[ty]['\"]?[- ]?(?:intersection|junction|type)|three[- ]leg|3[- ]leg", low):
         return RoadKind.T_JUNCTION, m.span()
-    if m := re.search(r"\bintersection\b|\bintersecting\b", low):
+    # (a "non-intersection" or "non-junction" road is one away from any junction, as crash databases code it)
+    if m := re.search(r"(?<!non-)(?<!non )\bintersection\b|\bintersecting\b", low):
         return RoadKind.INTERSECTION, m.span()
     return RoadKind.STRAIGHT, None
 
@@ -273,7 +284,9 @@ def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unk
 
 
 _ONE_LANE_ROAD = re.compile(
-    r"\b(?:travel\w*|driv\w*|head\w*|was|were|proceed\w*) (?:\w+ ){0,2}(?:on|along) (?:a|the) (?:[\w-]+,? ){0,3}?"
+    # (a course between the verb and the road: "north", "in a northerly direction")
+    r"\b(?:travel\w*|driv\w*|head\w*|was|were|proceed\w*) (?:(?:in an? \w+ direction|\w+) ){0,2}(?:on|along) (?:a|the) "
+    r"(?:[\w-]+,? ){0,3}?"
     r"(?:roadway|road|street|highway) with one lane (?:of travel )?(?:in each|each|per|in either) direction"
     r"|\b(?:on|along) (?:a|the) one-way (?:roadway|road|street) with one lane\b",
     re.I,

@@ -10,6 +10,7 @@ from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.sentences import sentences
+from sovarc.compiler.frontend.spelling import spell_out
 
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
 
@@ -18,6 +19,10 @@ _VEHICLE = re.compile(
     r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
     r"(?![\w-]))",
     re.IGNORECASE,
+)
+# Police forms number the drivers as their vehicles: "Driver #1", "Driver 2", "driver one" is the driver of V1.
+_DRIVER = re.compile(
+    r"\b([Dd])river\s*(?:#\s*|no\.\s*|number\s+)?(\d|one|two|three|four|five)(?![\w-])(?!\s*(?:years?|mph)\b)"
 )
 _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A group of pedestrians counted, not numbered: "struck three pedestrians" is three road users.
@@ -49,6 +54,46 @@ def without_non_impacts(sentence: str) -> str:
     """The sentence with the impact words that say no participants met blanked: a crash avoided, denied, or
     named only as the scene or the time."""
     return _NO_IMPACT.sub(" ", sentence)
+
+
+# A narrative told in the present says the same events as one told in the past ("V2 stops at the sign, then turns
+# left and strikes V1"). The readers read the past, so a crash narrative's verb in the third person present, right
+# after its subject (a participant, a pronoun, a part of a vehicle, or "and"/"then" going on with the subject), is
+# read as its past, word for word.
+_IRREGULAR = (
+    "strikes struck hits hit comes came makes made begins began drives drove sees saw goes went runs ran "
+    "spins spun loses lost rear-ends rear-ended sideswipes sideswiped occurs occurred happens happened passes passed "
+    "approaches approached proceeds proceeded crosses crossed"
+)
+_REGULAR = (
+    "turn stop slow brake steer swerve enter accelerate attempt start change pull back continue merge impact contact "
+    "travel fail depart rotate collide yield move veer exit overcorrect drift observe notice decelerate skid"
+)
+_PAST_OF = dict(zip(_IRREGULAR.split()[::2], _IRREGULAR.split()[1::2], strict=True))
+_PAST_OF.update({f"{v}s": f"{v}{'d' if v.endswith('e') else 'ped' if v == 'stop' else 'ed'}" for v in _REGULAR.split()})
+_VERBS_NOW = "|".join(sorted(_PAST_OF, key=len, reverse=True))
+_NOW = re.compile(
+    r"(\b(?:[VP]\d|he|she|it|they|and|then|vehicle|crash|collision)(?: then)? )(" + _VERBS_NOW + r")\b", re.I
+)
+# after a part ("its right front impacts") or a comma going on with the subject ("overcorrected, comes back"),
+# not a noun: "the front brakes", "two quarter turns, ..."
+_NOW_AFTER_PART = re.compile(
+    r"(\b(?:front|rear|side|bumper|corner|end|driver|operator)(?: then)? |, )"
+    r"(?!(?:brakes|stops|turns|impacts|backs)\b(?! (?:the|V\d|at|for|in|to|left|right)\b))(" + _VERBS_NOW + r")\b",
+    re.I,
+)
+# a strike said in the present passive: "its left side is struck by the front of V1"
+_IS_STRUCK = re.compile(r"\b(is|are)(?= (?:then )?(?:struck|hit|impacted|contacted|rear-ended|sideswiped|clipped)\b)")
+
+
+def in_past(text: str) -> str:
+    """The narrative with its present-tense verbs of the crash in the past (see above)."""
+
+    def past(m: re.Match[str]) -> str:
+        return m.group(1) + _PAST_OF[m.group(2).lower()]
+
+    text = _NOW_AFTER_PART.sub(past, _NOW.sub(past, text))
+    return _IS_STRUCK.sub(lambda m: "was" if m.group(1) == "is" else "were", text)
 
 
 def normalize_names(text: str) -> str:
@@ -88,7 +133,11 @@ def number_vehicles(text: str) -> str:
         raw = (m.group(1) or m.group(2)).lower()
         return f"V{_NUMBER_WORDS.get(raw, raw)}"
 
-    return _VEHICLE.sub(vehicle, text)
+    def driver(m: re.Match[str]) -> str:
+        raw = m.group(2).lower()
+        return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{_NUMBER_WORDS.get(raw, raw)}"
+
+    return _DRIVER.sub(driver, _VEHICLE.sub(vehicle, text))
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words
@@ -165,7 +214,8 @@ def prepare_report(text: str) -> Prepared:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
     that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
     the words each party numbered by rule was named by."""
-    labelled, note, words = parties(number_vehicles(text))
+    labelled, note, words = parties(number_vehicles(spell_out(text)))
+    labelled = in_past(labelled)
     return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
 
