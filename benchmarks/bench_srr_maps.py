@@ -26,12 +26,11 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import time
 from collections import Counter
 from pathlib import Path
 
-import sumo
+from maps import named
 from sovarc.compiler.evaluation.srr import (
     FAILURE_CLASSES,
     NO_SHAPE,
@@ -44,22 +43,20 @@ from sovarc.compiler.maps import find_sites, load_map
 from sovarc.dsl import parse
 from sovarc.dsl.ir import RoadKind
 
-ROOT = Path(__file__).resolve().parent.parent
-SHARED = Path(os.environ.get("SOVARC_SHARED", ROOT.parent / "shared"))
-OPENDRIVE = SHARED / "data" / "opendrive"
-GAME = Path(sumo.SUMO_HOME) / "tools" / "game"
 KINDS = (RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT)
 SHORT = {RoadKind.INTERSECTION: "X", RoadKind.T_JUNCTION: "T", RoadKind.STRAIGHT: "S"}
 
 
+HELD_OUT = ("Town06", "Town07")  # for reporting, never for tuning
+
+
 def maps() -> dict[str, dict[str, Path]]:
-    dev = {f"Town0{k}": OPENDRIVE / "carla" / f"Town0{k}.xodr" for k in (1, 2, 4)}
-    dev |= {p.stem: p for p in sorted(OPENDRIVE.glob("*.xodr"))}
-    dev["town"] = ROOT / "examples" / "maps" / "town.net.xml"
-    dev |= {"DRT": GAME / "DRT" / "osm.net.xml", "A10KW": GAME / "A10KW" / "osm.net.xml"}
-    dev["bs3d"] = GAME / "bs3d" / "bs.net.xml"
-    held = {f"Town0{k}": OPENDRIVE / "carla" / f"Town0{k}.xodr" for k in (6, 7)}
-    return {"dev": dev, "held-out": held}
+    """Every named map (`maps.named`): the development ones, then the held-out ones."""
+    every = named()
+    return {
+        "dev": {name: path for name, path in every.items() if name not in HELD_OUT},
+        "held-out": {name: path for name, path in every.items() if name in HELD_OUT},
+    }
 
 
 def run_map(name: str, path: Path, scenarios: list[tuple[Path, object]], args: argparse.Namespace) -> dict:
