@@ -229,9 +229,10 @@ def _on_routes(c: Contact, striker: _View, victim: _View) -> Contact:
 
 class Lines:
     """A striker's and a victim's routes as the contact search compares them: each view of a route and
-    each pair of views' distances made once, for every crash type and face asked of the pair (the
-    distance matrix, made again for each, was a quarter of the back end's time). Lives as long as the
-    caller's question about these two routes, which are not changed meanwhile."""
+    each pair of views' distances made once, for every crash type and face asked of the pair (made
+    again for each, the distance matrices were most of the contact search's time: on the truth scenarios
+    on Town04, 958 were made where 333 serve). Lives as long as the caller's question about these two
+    routes, which are not changed meanwhile."""
 
     def __init__(self, striker: Route, victim: Route) -> None:
         self.striker, self.victim = striker, victim
