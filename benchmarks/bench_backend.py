@@ -30,6 +30,7 @@ from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
+from maps import TOWN, add_map_argument
 from sovarc.compiler import staging, synth
 from sovarc.compiler.maps import SiteMatch, load_map
 from sovarc.compiler.pipeline import Options, RunLog, SiteJob, Sites, run_pipeline, stage_named
@@ -39,7 +40,6 @@ from sovarc.dsl.errors import SovarcError
 from sovarc.targets.sumo import check, emit
 from timing import percentile
 
-ROOT = Path(__file__).resolve().parent.parent
 STAGES = ("lower", "synthesize", "emit", "check")
 
 Spent = dict[str, list[float]]  # stage -> [cpu s, wall s]
@@ -89,13 +89,13 @@ def _instrument(clock: Clock) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("truth", type=Path)
-    parser.add_argument("-m", "--map", type=Path, action="append", help="repeatable; default: the example town")
+    add_map_argument(parser, "the example town")
     parser.add_argument("--roads", type=int, default=3)
     parser.add_argument("--spare", type=int, help="extra sites tried per scenario (default: three times --roads)")
     args = parser.parse_args()
     clock = Clock()
     _instrument(clock)
-    for path in args.map or [ROOT / "examples" / "maps" / "town.net.xml"]:
+    for path in args.map or [TOWN]:
         _bench_map(path, args, clock)
 
 

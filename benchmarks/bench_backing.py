@@ -14,19 +14,16 @@ from $SOVARC_SHARED. Prints one row per move and map, and the CPU time per map; 
 from __future__ import annotations
 
 import argparse
-import os
 import tempfile
 import time
 from pathlib import Path
 
+from maps import ROOT, TOWN, add_map_argument, carla, grouped
 from sovarc.compiler.pipeline import Options, run_pipeline
 from sovarc.dsl import parse
 
-ROOT = Path(__file__).resolve().parent.parent
-SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
-CARLA = SHARED / "data" / "opendrive" / "carla"
-TUNED = [ROOT / "examples" / "maps" / "town.net.xml", CARLA / "Town01.xodr"]
-HELD_OUT = [CARLA / "Town02.xodr", CARLA / "Town04.xodr", CARLA / "Town07.xodr"]
+TUNED = [TOWN, *carla(1)]
+HELD_OUT = carla(2, 4, 7)
 EXAMPLES = [
     "straight_reverse_into_stopped_rear_end",
     "straight_back_out_of_parking_rear_end",
@@ -58,15 +55,11 @@ def row(name: str, text: str, map_path: Path, roads: int, out: Path) -> str:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("-m", "--map", action="append", type=Path, help="maps (default: built-on, then held-out)")
+    add_map_argument(parser, "built-on, then held-out")
     parser.add_argument("--roads", type=int, default=3)
     parser.add_argument("--out", type=Path, default=None)
     args = parser.parse_args()
-    maps = (
-        [(m, "") for m in args.map]
-        if args.map
-        else [(m, "built on") for m in TUNED] + [(m, "held out") for m in HELD_OUT]
-    )
+    maps = grouped(args.map, TUNED, HELD_OUT)
     out = args.out or Path(tempfile.mkdtemp(prefix="bench_backing_"))
     for map_path, why in maps:
         start = time.process_time()

@@ -19,9 +19,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from maps import TOWN, add_map_argument
 from sovarc.compiler.batch.executors import make_executor
 
-ROOT = Path(__file__).resolve().parents[1]
 SOVARC = str(Path(sys.executable).with_name("sovarc"))
 
 
@@ -48,12 +48,12 @@ def overhead(jobs: int, executor: str, tasks: int = 2000) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("truth")
-    parser.add_argument("-m", "--map", action="append")
+    add_map_argument(parser, "the example town")
     parser.add_argument("--roads", type=int, default=3)
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument("--executor", default="local")
     args = parser.parse_args()
-    maps = args.map or [str(ROOT / "examples" / "maps" / "town.net.xml")]
+    maps = [str(m) for m in args.map or [TOWN]]
     print("load before:", os.getloadavg())
     with tempfile.TemporaryDirectory() as tmp:
         one, many = Path(tmp) / "j1.json", Path(tmp) / "jn.json"

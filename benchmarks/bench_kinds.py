@@ -19,20 +19,17 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import tempfile
 from collections import Counter
 from pathlib import Path
 from typing import Any
 
+from maps import ROOT, TOWN, add_map_argument, carla, grouped
 from sovarc.compiler.cli import main as sovarc
 from sovarc.dsl import parse
 
-ROOT = Path(__file__).resolve().parent.parent
-SHARED = Path(os.environ.get("SOVARC_SHARED") or ROOT.parent / "shared")
-CARLA = SHARED / "data" / "opendrive" / "carla"
-TUNED = [ROOT / "examples" / "maps" / "town.net.xml", CARLA / "Town01.xodr"]
-HELD_OUT = [CARLA / "Town02.xodr"]
+TUNED = [TOWN, *carla(1)]
+HELD_OUT = carla(2)
 TARGETS = ("sumo", "openscenario", "fmu")
 # what each scenario stands for in issue 20 -> its file (examples/scenarios, else examples/variants)
 SCENARIOS = {
@@ -145,17 +142,13 @@ def _reasons(cells: list[tuple[str, list[str]]]) -> Counter[str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("-m", "--map", action="append", type=Path, help="maps (default: built-on, then held-out)")
+    add_map_argument(parser, "built-on, then held-out")
     parser.add_argument("--roads", type=int, default=3)
     parser.add_argument("-j", "--jobs", type=int, default=1)
     parser.add_argument("--out", type=Path, default=None)
     parser.add_argument("--only", action="append", help="only these scenarios (their file names)")
     args = parser.parse_args()
-    maps = (
-        [(m, "") for m in args.map]
-        if args.map
-        else [(m, "built on") for m in TUNED] + [(m, "held out") for m in HELD_OUT]
-    )
+    maps = grouped(args.map, TUNED, HELD_OUT)
     out = args.out or Path(tempfile.mkdtemp(prefix="bench_kinds_"))
     chosen = {k: v for k, v in SCENARIOS.items() if not args.only or v in args.only}
     inputs = [str(source(name)) for name in chosen.values()]

@@ -29,7 +29,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-import sumo
+from maps import DRT, TOWN, TRUTH
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.maps import RoadMap, find_sites, load_map, match_sites
 from sovarc.compiler.pipeline import Assumed, Options, RunLog, SiteJob, Sites, stage_named
@@ -39,8 +39,6 @@ from sovarc.dsl.errors import SovarcError
 from sovarc.dsl.ir import RoadKind, Scenario
 from timing import percentile
 
-ROOT = Path(__file__).resolve().parent.parent
-TRUTH = ROOT.parent / "shared" / "data" / "nmvccs" / "truth"
 ROADS = 3
 
 
@@ -60,10 +58,7 @@ class Run:
 
 
 def _maps() -> dict[str, Path]:
-    return {
-        "town": ROOT / "examples" / "maps" / "town.net.xml",
-        "DRT osm": Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml",
-    }
+    return {"town": TOWN, "DRT osm": DRT}
 
 
 def _import_truth(out: Path) -> list[tuple[str, Scenario]]:

@@ -21,6 +21,7 @@ import time
 from collections import Counter
 from pathlib import Path
 
+from maps import resolve
 from sovarc.compiler.maps import find_sites, load_map
 
 
@@ -37,7 +38,7 @@ def _load_and_find(path: Path) -> tuple[float, float, Counter[str]]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("maps", type=Path, nargs="+")
+    parser.add_argument("maps", type=resolve, nargs="+", help="files or maps' names (Town04, town, DRT, ...)")
     parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
     print(f"load + find_sites, s; warm: median of {args.repeat}; load average {os.getloadavg()[0]:.1f}")

@@ -32,6 +32,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the hand-made plans live with the tests
 
+from maps import TOWN, resolve  # noqa: E402
 from sovarc.compiler.maps import load_map, with_opendrive  # noqa: E402
 from sovarc.compiler.pipeline import Options as PipelineOptions  # noqa: E402
 from sovarc.compiler.pipeline import stage_sites  # noqa: E402
@@ -425,7 +426,7 @@ def hand_made(args: argparse.Namespace) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--truth", help="folder of ground-truth .sov files: compare with the SUMO oracle")
-    parser.add_argument("-m", "--map", default=str(ROOT / "examples" / "maps" / "town.net.xml"))
+    parser.add_argument("-m", "--map", type=resolve, default=TOWN, help="a file or a map's name (default: the town)")
     parser.add_argument("--roads", type=int, default=3, help="sites per scenario (default 3)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--plans", help="folder caching the synthesized plans (read if there, else written)")

@@ -12,20 +12,15 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
-import sumo
+from maps import DRT, ROOT, TOWN
 from sovarc.compiler.maps import find_sites, load_map, match_sites
 from sovarc.dsl import parse
 from sovarc.dsl.errors import LoweringError
 from timing import median_ms
 
-ROOT = Path(__file__).resolve().parent.parent
-
 
 def _maps() -> dict[str, Path]:
-    return {
-        "town": ROOT / "examples" / "maps" / "town.net.xml",
-        "DRT osm": Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml",
-    }
+    return {"town": TOWN, "DRT osm": DRT}
 
 
 def _match_all(scenarios: list[Any], road_map: Any, n: int) -> int:

@@ -10,11 +10,12 @@ development maps (CARLA Town01, 02, 04; esmini's maps; the bundled town; SUMO's 
 held-out ones (CARLA Town06, 07), printed in separate groups: the held-out maps are for reporting,
 never for tuning. Also prints, per map, the CPU time of loading it and finding its sites. An SRR
 in brackets is of a kind the map has fewer than 3 sites of (no target there). Each SRR is printed
-over all scenario-sites / over those the map has a site of the needed shape for: a scenario-site
-the map has no site of the shape for (its kind, the lanes each participant needs, an arm where each
-move leads; fewer such sites than --roads) is its own failure class, not a planning failure
-(`srr.NO_SHAPE`). Planning failures are split by what their reasons say: no site fits, the
-record contradicts itself, a site that fits only clamped, or a fitting site cannot host the crash.
+over all scenario-sites / over those the map has a site of the needed shape for / over those less
+the scenarios whose record contradicts itself: a scenario-site the map has no site of the shape for
+(its kind, the lanes each participant needs, an arm where each move leads; fewer such sites than
+--roads) is its own failure class, not a planning failure (`srr.NO_SHAPE`). Planning failures are
+split by what their reasons say, as `sovarc eval srr` splits them (`srr.PLANNING`): no site fits,
+the record contradicts itself, a site that fits only clamped, or a fitting site cannot host the crash.
 
 A full run is minutes per town: --only runs a subset of scenarios (a glob on file names), --map
 picks maps by name, and --save/--reuse keep each map's rows in DIR so that a table can be printed
@@ -25,33 +26,37 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import time
 from collections import Counter
 from pathlib import Path
 
-import sumo
-from sovarc.compiler.evaluation.srr import FAILURE_CLASSES, NO_SHAPE, reconstruct
+from maps import named
+from sovarc.compiler.evaluation.srr import (
+    FAILURE_CLASSES,
+    NO_SHAPE,
+    PLANNING,
+    contradicting,
+    planning_split,
+    reconstruct,
+)
 from sovarc.compiler.maps import find_sites, load_map
 from sovarc.dsl import parse
 from sovarc.dsl.ir import RoadKind
 
-ROOT = Path(__file__).resolve().parent.parent
-SHARED = Path(os.environ.get("SOVARC_SHARED", ROOT.parent / "shared"))
-OPENDRIVE = SHARED / "data" / "opendrive"
-GAME = Path(sumo.SUMO_HOME) / "tools" / "game"
 KINDS = (RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT)
 SHORT = {RoadKind.INTERSECTION: "X", RoadKind.T_JUNCTION: "T", RoadKind.STRAIGHT: "S"}
 
 
+HELD_OUT = ("Town06", "Town07")  # for reporting, never for tuning
+
+
 def maps() -> dict[str, dict[str, Path]]:
-    dev = {f"Town0{k}": OPENDRIVE / "carla" / f"Town0{k}.xodr" for k in (1, 2, 4)}
-    dev |= {p.stem: p for p in sorted(OPENDRIVE.glob("*.xodr"))}
-    dev["town"] = ROOT / "examples" / "maps" / "town.net.xml"
-    dev |= {"DRT": GAME / "DRT" / "osm.net.xml", "A10KW": GAME / "A10KW" / "osm.net.xml"}
-    dev["bs3d"] = GAME / "bs3d" / "bs.net.xml"
-    held = {f"Town0{k}": OPENDRIVE / "carla" / f"Town0{k}.xodr" for k in (6, 7)}
-    return {"dev": dev, "held-out": held}
+    """Every named map (`maps.named`): the development ones, then the held-out ones."""
+    every = named()
+    return {
+        "dev": {name: path for name, path in every.items() if name not in HELD_OUT},
+        "held-out": {name: path for name, path in every.items() if name in HELD_OUT},
+    }
 
 
 def run_map(name: str, path: Path, scenarios: list[tuple[Path, object]], args: argparse.Namespace) -> dict:
@@ -73,55 +78,35 @@ def run_map(name: str, path: Path, scenarios: list[tuple[Path, object]], args: a
     return result
 
 
-# Why a scenario-site failed to plan, by what its reason says: the map lacks the kind or a site that
-# fits (a truthful miss), the record contradicts itself, a site that fits only clamped (too few lanes,
-# a move with no connection) cannot host it, or a site that fits cannot host the crash.
-PLANNING = (
-    ("map lacks the kind", ("has no ",)),
-    ("no site fits", ("no site of ", "fewer fitting sites than asked", "none of its")),
-    ("record contradicts itself", ("no road can stage it",)),
-    ("site fits only clamped", ("the site fits only clamped",)),
-    ("site cannot host it", ("",)),
-)
-
-
-def planning_class(row: dict, first: dict[str, str]) -> str:
-    """The class of a planning failure; a scenario's follow-up rows ('no site') take its first row's."""
-    reason = row["reason"] if row["reason"] != "no site" else first.get(row["scenario"], "")
-    return next(name for name, marks in PLANNING if any(mark in reason for mark in marks))
-
-
 def table(group: str, results: list[dict]) -> str:
-    head = f"{'map':<22}{'sites X/T/S':>13}  {'SRR X':>13} {'SRR T':>13} {'SRR S':>13}  {'sites s':>7}  failures"
+    head = f"{'map':<22}{'sites X/T/S':>13}  {'SRR X':>18} {'SRR T':>18} {'SRR S':>18}  {'sites s':>7}  failures"
     lines = [f"== {group} maps ==", head]
     for r in results:
         sites = "/".join(str(r["sites"][k.value]) for k in KINDS)
+        mixed = contradicting(r["rows"])
         rates = []
         for kind in KINDS:
             chosen = [row for row in r["rows"] if row["kind"] == kind.value]
             ok = sum(row["passed"] for row in chosen)
-            hosted = sum(row["failure"] != NO_SHAPE for row in chosen)
-            # all rows / the rows the map has a site of the needed shape for (srr.NO_SHAPE)
+            hosted = [row for row in chosen if row["failure"] != NO_SHAPE]
+            sound = sum(row["scenario"] not in mixed for row in hosted)
+            # all rows / the rows the map has a site of the needed shape for (srr.NO_SHAPE) / those less
+            # the scenarios whose record contradicts itself (srr.contradicting)
             rate = f"{100.0 * ok / len(chosen):.1f}" if chosen else "-"
             if chosen:
-                rate += f"/{100.0 * ok / hosted:.1f}" if hosted else "/-"
+                rate += "".join(f"/{100.0 * ok / n:.1f}" if n else "/-" for n in (len(hosted), sound))
             # in brackets: a kind the map has fewer than 3 sites of, where the 97% target does not apply
-            rates.append(f"{rate if r['sites'][kind.value] >= 3 or not chosen else f'({rate})':>13}")
+            rates.append(f"{rate if r['sites'][kind.value] >= 3 or not chosen else f'({rate})':>18}")
         failures = Counter(row["failure"] for row in r["rows"] if not row["passed"])
         failed = ", ".join(f"{c} {failures[c]}" for c in FAILURE_CLASSES if failures[c]) or "none"
         lines.append(f"{r['map']:<22}{sites:>13}  {' '.join(rates)}  {r['site_s']:7.2f}  {failed}")
-        first: dict[str, str] = {}
-        for row in r["rows"]:
-            first.setdefault(row["scenario"], row["reason"] or "")
         for kind in KINDS:
-            planning = Counter(
-                planning_class(row, first)
-                for row in r["rows"]
-                if row["kind"] == kind.value and row["failure"] == "planning failed"
-            )
+            planning = planning_split([row for row in r["rows"] if row["kind"] == kind.value])
             if planning:
                 why = ", ".join(f"{name} {planning[name]}" for name, _ in PLANNING if planning[name])
                 lines.append(f"{'':<22}{'planning failed ' + SHORT[kind]:>28}: {why}")
+        if mixed:
+            lines.append(f"{'':<22}{'contradict themselves':>28}: {', '.join(sorted(mixed))}")
     return "\n".join(lines)
 
 

@@ -20,6 +20,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # for the tests' plan helper
 
+from maps import TOWN  # noqa: E402
 from sovarc.compiler.lower import lower  # noqa: E402
 from sovarc.compiler.maps import load_map  # noqa: E402
 from sovarc.compiler.plan import Plan  # noqa: E402
@@ -32,7 +33,7 @@ from tests.targets.sumo.plans import SCENES  # noqa: E402
 
 
 def synthesized() -> dict[str, Plan]:
-    town = load_map(ROOT / "examples" / "maps" / "town.net.xml")
+    town = load_map(TOWN)
     plans = {}
     for path in sorted((ROOT / "examples" / "scenarios").glob("*.sov")):
         try:

@@ -7,6 +7,9 @@ crossing (and replay error, when SUMO refused the scenario). A scenario-site the
 for is not a planning failure: where fewer of the map's sites have the shape the scenario needs
 (its kind, the lanes each participant needs, an arm where each move leads) than were asked, that
 many of its failed rows are "no site of its shape", and the SRR is also given over the rest.
+Planning failures are split by what their reasons say (`planning_class`), and the SRR is given
+once more without the scenarios whose record contradicts itself (no road can stage it): a
+failure of the ground truth, on every map, not of the map or the compiler.
 """
 
 from __future__ import annotations
@@ -35,6 +38,19 @@ FAILURE_CLASSES = ("planning failed", "crash type mismatch", "line crossing", "r
 
 Row = dict[str, Any]
 
+CONTRADICTS = "record contradicts itself"
+# Why a scenario-site failed to plan, by what its reason says, first match: the map lacks the kind or a
+# site that fits (a truthful miss), the record contradicts itself (lower/consistency.py), a site that
+# fits only clamped (too few lanes, a move with no connection) cannot host it, or a site that fits
+# cannot host the crash.
+PLANNING = (
+    ("map lacks the kind", ("has no ",)),
+    ("no site fits", ("no site of ", "fewer fitting sites than asked", "none of its")),
+    (CONTRADICTS, ("no road can stage it",)),
+    ("site fits only clamped", ("the site fits only clamped",)),
+    ("site cannot host it", ("",)),
+)
+
 
 def classify(verdict: Any) -> str | None:
     """The paper's Table 5 classes for a SUMO verdict; None when it passed."""
@@ -46,6 +62,39 @@ def classify(verdict: Any) -> str | None:
     if "lane_lines" in failed:
         return "line crossing"
     return "replay error"
+
+
+def planning_class(row: Row, first: dict[str, str]) -> str:
+    """The class of a planning failure (PLANNING); a scenario's follow-up rows ('no site') take the
+    reason of its first row, `first` (scenario -> reason, `first_reasons`)."""
+    reason = _reason(row, first)
+    return next(name for name, marks in PLANNING if any(mark in reason for mark in marks))
+
+
+def first_reasons(rows: list[Row]) -> dict[str, str]:
+    """Each scenario's first row's reason, which its follow-up rows ('no site') stand for."""
+    first: dict[str, str] = {}
+    for row in rows:
+        first.setdefault(row["scenario"], row["reason"] or "")
+    return first
+
+
+def planning_split(rows: list[Row]) -> Counter[str]:
+    """The planning failures among the rows, by class (PLANNING)."""
+    first = first_reasons(rows)
+    return Counter(planning_class(r, first) for r in rows if r["failure"] == "planning failed")
+
+
+def contradicting(rows: list[Row]) -> set[str]:
+    """The scenarios whose record contradicts itself: a failed row's reason says no road can stage it,
+    whatever class the row was given (a map short of sites of its shape keeps the reason in brackets)."""
+    marks = dict(PLANNING)[CONTRADICTS]
+    first = first_reasons(rows)
+    return {r["scenario"] for r in rows if not r["passed"] and any(m in _reason(r, first) for m in marks)}
+
+
+def _reason(row: Row, first: dict[str, str]) -> str:
+    return row["reason"] if row["reason"] != "no site" else first.get(row["scenario"], "")
 
 
 def reconstruct(
@@ -150,23 +199,36 @@ def _row(path: Path, kind: str, site: str, failure: str | None, reason: str) -> 
 
 def srr_table(name: str, rows: list[Row]) -> str:
     kinds = sorted({str(r["kind"]) for r in rows})
+    mixed = contradicting(rows)
     lines = [
-        f"SRR on {name} (scenario-sites reconstructed / attempted; then / those the map has a site of the shape for)",
-        f"  {'road kind':<14}{'SRR':>8}  {'n':<9}{'SRR':>8}  n",
+        f"SRR on {name} (scenario-sites reconstructed / attempted; then / those the map has a site of the shape for;",
+        "  then / those, less the scenarios whose record contradicts itself: the truth's failure, not the map's)",
+        f"  {'road kind':<14}{'SRR':>8}  {'n':<9}{'SRR':>8}  {'n':<9}{'SRR':>8}  n",
     ]
     for kind in [*kinds, "all"]:
         chosen = [r for r in rows if kind in ("all", r["kind"])]
-        ok = sum(1 for r in chosen if r["passed"])
-        hosted = sum(1 for r in chosen if r["failure"] != NO_SHAPE)
-        both = f"{100.0 * ok / max(1, len(chosen)):7.1f}%  {f'{ok}/{len(chosen)}':<9}"
-        lines.append(f"  {kind:<14}{both}{100.0 * ok / max(1, hosted):7.1f}%  {ok}/{hosted}")
+        hosted = [r for r in chosen if r["failure"] != NO_SHAPE]
+        sound = [r for r in hosted if r["scenario"] not in mixed]
+        rates = [_rate(chosen), _rate(hosted), _rate(sound)]
+        lines.append(f"  {kind:<14}" + "".join(f"{rate:<19}" for rate in rates).rstrip())
     counts = Counter(str(r["failure"]) for r in rows if not r["passed"])
     lines.append("  failures: " + ", ".join(f"{c} {counts[c]}" for c in FAILURE_CLASSES))
+    planning = planning_split(rows)
+    if planning:
+        lines.append("  planning failed: " + ", ".join(f"{c} {planning[c]}" for c, _ in PLANNING))
+    if mixed:
+        lines.append(f"  records that contradict themselves: {', '.join(sorted(mixed))}")
     replaced = sum(1 for r in rows if r.get("skipped") and r["failure"] != "planning failed")
     given_up = sum(len(r.get("skipped", ())) for r in rows)
     if given_up:
         lines.append(f"  sites that could not host their crash: {given_up}; slots filled by another site: {replaced}")
     return "\n".join(lines) + "\n"
+
+
+def _rate(rows: list[Row]) -> str:
+    """Reconstructed / attempted over the rows, as a percentage and a fraction."""
+    ok = sum(1 for r in rows if r["passed"])
+    return f"{100.0 * ok / max(1, len(rows)):7.1f}%  {ok}/{len(rows)}"
 
 
 def sov_files(path: Path) -> list[Path]:

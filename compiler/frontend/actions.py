@@ -16,6 +16,7 @@ import re
 
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
+from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
@@ -250,7 +251,6 @@ _INTO_LANES = re.compile(
     r"|\benter(?:ed|ing|s) the (north|south|east|west)bound (?:travel )?lane",
     re.I,
 )
-_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 # What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
 # What was intended ends where a new clause begins: "waiting for traffic to clear and then proceeded to turn
 # left" waited, then turned. A coordinated or subordinate clause, or "and" before a verb of its own, ends it.
@@ -413,7 +413,7 @@ def _found(
             found += [
                 (piece.at + m.start(), Action(ActionKind.RETROGRADE))
                 for m in _INTO_LANES.finditer(what_was_done(piece.text))
-                if (m.group(1) or m.group(2)).lower() == _OPPOSITE[heading.value]
+                if (m.group(1) or m.group(2)).lower() == opposite(heading).value
             ]
     if meant is not None:  # one meant to turn and drove into the junction: that is its turn
         found = [(at, Action(meant) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]

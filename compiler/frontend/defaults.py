@@ -11,7 +11,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Provenance, Role, Scenario, Unknown
+from sovarc.compiler.frontend.words import opposite
+from sovarc.dsl.ir import ActionKind, CrashType, Participant, Provenance, Role, Scenario, Unknown
 
 Default = Callable[[Scenario], tuple[Scenario, list[str]]]
 
@@ -47,10 +48,6 @@ def victim_of_two(s: Scenario) -> tuple[Scenario, list[str]]:
     return replace(s, crash=replace(c, victim=other)), ["crash.victim"]
 
 
-_OPPOSITE = {Heading.NORTH: Heading.SOUTH, Heading.SOUTH: Heading.NORTH, Heading.EAST: Heading.WEST}
-_OPPOSITE[Heading.WEST] = Heading.EAST
-
-
 def heading_from_crash(s: Scenario) -> tuple[Scenario, list[str]]:
     """Two vehicles in a rear-end crash travel the same way; head-on, opposite ways, also when one of them had
     gone into the other's lane (unless one turned or crossed, when the geometry says nothing)."""
@@ -63,7 +60,7 @@ def heading_from_crash(s: Scenario) -> tuple[Scenario, list[str]]:
     if len(known) != 1 or any(a.kind not in straight_on for p in vehicles for a in p.known_actions):
         return s, []
     other = next(p for p in vehicles if isinstance(p.heading, Unknown))
-    heading = known[0].heading if c.type is CrashType.REAR_END else _OPPOSITE[known[0].heading]
+    heading = known[0].heading if c.type is CrashType.REAR_END else opposite(known[0].heading)
     people = tuple(replace(p, heading=heading) if p is other else p for p in s.participants)
     return replace(s, participants=people), [f"{other.id}.heading"]
 

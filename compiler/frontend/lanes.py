@@ -14,10 +14,9 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.words import ORDINALS, number
 from sovarc.dsl.ir import UNKNOWN, Unknown
 
-_NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "single": 1}
-_ORDINAL = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 _N = r"(\d|one|two|three|four|five|six|single)"
 _EACH_WAY = re.compile(
     _N + r"[- ](?:travel )?lanes? (?:of travel )?(?:in |for )?(?:each|either|per|both) (?:the \w+ and \w+ )?direction",
@@ -32,17 +31,13 @@ _LEFT = re.compile(r"\b(?:left|inside|passing|fast|median|inner) (?:\w+ )?lane\b
 _MIDDLE = re.compile(r"\b(?:middle|center|centre) (?:travel |through )?lane\b", re.I)
 
 
-def _number(word: str) -> int:
-    return int(word) if word.isdigit() else _NUM[word.lower()]
-
-
 def per_direction(own: str, report: str, lanes: int | Unknown, one_road: bool) -> int | Unknown:
     """Lanes in a vehicle's direction: all of a one-way road's, or half a two-way road's, or what the report
     states when the road's count is not known. `own` is the vehicle's own clauses: at a junction a one-way road
     elsewhere in the report (the cross street) says nothing of its road; away from one (`one_road`) the report
     describes the one road there is. `lanes` is the widest road's count."""
     if isinstance(lanes, Unknown):
-        return _number(m.group(1)) if (m := _EACH_WAY.search(report)) else UNKNOWN
+        return number(m.group(1)) if (m := _EACH_WAY.search(report)) else UNKNOWN
     road = report if one_road else own
     if _ONE_WAY.search(road) and not re.search(r"\btwo[- ]way\b", road, re.I):
         return lanes
@@ -53,7 +48,7 @@ def placed_lane(text: str, each_way: int | Unknown) -> int | Unknown:
     """The lane a clause places a vehicle in by the lane's place across the road (left, middle, n-th from the
     left), counted from the right; unknown when the words need the lane count and it is not known."""
     if m := _FROM.search(text):
-        n = _ORDINAL[m.group(1).lower()]
+        n = ORDINALS[m.group(1).lower()]
         if m.group(2).lower() in ("right", "curb"):
             return n
         return each_way - n + 1 if isinstance(each_way, int) and n <= each_way else UNKNOWN
@@ -117,7 +112,7 @@ def _numbered_side(window: str, said_before: str) -> str | None:
     origins = list(_IN_NUMBERED.finditer(said_before))
     if into is None or not origins:
         return None
-    went, was = (_number(next(g for g in m.groups() if g)) for m in (into, origins[-1]))
+    went, was = (number(next(g for g in m.groups() if g)) for m in (into, origins[-1]))
     return None if went == was else ("right" if went < was else "left")
 
 

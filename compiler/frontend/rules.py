@@ -32,6 +32,7 @@ from sovarc.compiler.frontend.text import (
     prepare_report,
     sentences,
 )
+from sovarc.compiler.frontend.words import ORDINALS, number, turned
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -53,8 +54,6 @@ from sovarc.dsl.ir import (
     Weather,
 )
 
-_NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "single": 1}
-_ORDINAL = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 _NUMBER = r"(\d|one|two|three|four|five|six|seven|eight|single)"
 
 _WEATHER = [
@@ -89,10 +88,6 @@ def _miles(unit: str) -> bool:
 
 
 _HEADING = re.compile(r"\b(north|east|south|west)(?:bound|ward|erly)?\b", re.IGNORECASE)
-
-
-def _number(word: str) -> int:
-    return int(word) if word.isdigit() else _NUM[word.lower()]
 
 
 # A span a reader read a fact from: the fact's path, the text it is in ("named": the prepared report,
@@ -160,7 +155,7 @@ def read_lanes(text: str) -> tuple[int | Unknown, tuple[int, int] | None]:
     counts: list[tuple[int, tuple[int, int]]] = []
     each = r"(?: of travel)? (?:in )?(?:each|either|per|both)(?: the \w+ and \w+)? directions?"
     for m in re.finditer(_NUMBER + r"[- ]lanes?" + each, low):
-        counts.append((2 * _number(m.group(1)), m.span()))
+        counts.append((2 * number(m.group(1)), m.span()))
     for m in re.finditer(_NUMBER + r"[- ]lanes?\b(?!" + each + ")", low):
         tail = low[m.end() : m.end() + 60]
         if t := re.match(
@@ -169,14 +164,14 @@ def read_lanes(text: str) -> tuple[int | Unknown, tuple[int, int] | None]:
             r"(?:residential|rural|urban|city|county|state))",
             tail,
         ):
-            counts.append((_number(m.group(1)), (m.start(), m.end() + t.end())))
+            counts.append((number(m.group(1)), (m.start(), m.end() + t.end())))
         # the road said before the count: "the east/west roadway has five lanes", "the approach consists of"
         elif b := re.search(
             r"\b(?:road(?:way)?|street|highway|approach|avenue)\b[^.;]{0,40}?\b(?:has|had|have|consists? of"
             r"|consisted of) $",
             low[max(0, m.start() - 60) : m.start()],
         ):
-            counts.append((_number(m.group(1)), (m.start() - (min(60, m.start()) - b.start()), m.end())))
+            counts.append((number(m.group(1)), (m.start() - (min(60, m.start()) - b.start()), m.end())))
     if not counts:
         return UNKNOWN, None
     return max(counts, key=lambda c: c[0])
@@ -250,16 +245,14 @@ _TURN_TO = re.compile(
     r"(?: \w+)? " + _COMPASS,
     re.I,
 )
-_QUARTER = ["north", "east", "south", "west"]  # clockwise
 
 
 def _heading_before_turn(pieces: list[Piece]) -> tuple[Heading | Unknown, Piece | None, int]:
     """The heading before a turn said with the way it led (see above), when no heading is said outright."""
     for piece in pieces:
         if m := _TURN_TO.search(what_was_done(piece.text)):
-            after = _QUARTER.index(m.group(3).lower())
-            before = _QUARTER[(after + (1 if (m.group(1) or m.group(2)).lower() == "left" else -1)) % 4]
-            return Heading(before), piece, m.start()
+            after = Heading(m.group(3).lower())
+            return turned(after, 1 if (m.group(1) or m.group(2)).lower() == "left" else -1), piece, m.start()
     return UNKNOWN, None, 0
 
 
@@ -267,11 +260,11 @@ def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unk
     if m := re.search(
         r"\blane (?:#|number |no\.? )?" + _NUMBER + r"\b(?![-/])|\bnumber " + _NUMBER + r" lane", text, re.I
     ):
-        return _number(m.group(1) or m.group(2))
+        return number(m.group(1) or m.group(2))
     if re.search(r"\blane from the (?:left|right|curb|median|cent)", text, re.I):  # "the second lane from the left"
         return placed_lane(text, each_way)
     if m := re.search(r"\b(first|second|third|fourth|fifth) (?:\w+ ){0,2}lane\b", text, re.IGNORECASE):
-        return _ORDINAL[m.group(1).lower()]
+        return ORDINALS[m.group(1).lower()]
     if re.search(r"\b(?:right|curb|outside|outer|only|slow) (?:\w+ )?lane\b(?! of the \w+bound)", text, re.I):
         return 1
     if not isinstance(placed := placed_lane(text, each_way), Unknown):  # left, inside, middle: see lanes.py

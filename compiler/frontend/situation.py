@@ -20,10 +20,9 @@ from dataclasses import replace
 
 from sovarc.compiler.frontend.actions import what_was_done
 from sovarc.compiler.frontend.clauses import Piece
+from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import Action, ActionKind, Crash, CrashType, Heading, Participant, Role, Unknown
 
-_OPPOSITE = {Heading.NORTH: Heading.SOUTH, Heading.SOUTH: Heading.NORTH, Heading.EAST: Heading.WEST}
-_OPPOSITE[Heading.WEST] = Heading.EAST
 # Leaving one's lane sideways, said any way: the verb, not the lane line, carries it.
 _LATERAL = re.compile(
     r"\b(?:veer|swerv|drift|overcorrect|over-correct|overcompensat|oversteer|yaw|fishtail|skid|slid(?:e|ing)?\b)\w*"
@@ -59,13 +58,13 @@ def wrong_side(
     if isinstance(a.heading, Unknown) or isinstance(b.heading, Unknown):
         opposed = any(_opposed_by_words(early.get(p.id, [])) for p in pair)
     else:
-        opposed = _OPPOSITE[a.heading] == b.heading
+        opposed = opposite(a.heading) == b.heading
     if not opposed:
         return people, crash
     heading: dict[str, Heading | Unknown] = {p.id: p.heading for p in pair}
     for p, other in ((a, b), (b, a)):
         if isinstance(p.heading, Unknown) and not isinstance(other.heading, Unknown):
-            heading[p.id] = _OPPOSITE[other.heading]
+            heading[p.id] = opposite(other.heading)
     sideways = [p for p in pair if any(_LATERAL.search(what_was_done(x.text)) for x in early.get(p.id, []))]
     wrong = sideways[0].id if len(sideways) == 1 else None
     out = []

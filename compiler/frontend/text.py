@@ -11,8 +11,7 @@ from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.sentences import sentences
 from sovarc.compiler.frontend.spelling import spell_out
-
-_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+from sovarc.compiler.frontend.words import number
 
 # V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
@@ -103,7 +102,7 @@ def normalize_names(text: str) -> str:
         return f"P{m.group(2) or 1}"
 
     def group(m: re.Match[str]) -> str:
-        ids = [f"P{n}" for n in range(1, _NUMBER_WORDS[m.group(1).lower()] + 1)]
+        ids = [f"P{n}" for n in range(1, number(m.group(1)) + 1)]
         return " and ".join(ids)  # (no commas: a comma parts the clauses of an impact sentence)
 
     text = number_vehicles(text)
@@ -131,11 +130,11 @@ def number_vehicles(text: str) -> str:
 
     def vehicle(m: re.Match[str]) -> str:
         raw = (m.group(1) or m.group(2)).lower()
-        return f"V{_NUMBER_WORDS.get(raw, raw)}"
+        return f"V{number(raw)}"
 
     def driver(m: re.Match[str]) -> str:
         raw = m.group(2).lower()
-        return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{_NUMBER_WORDS.get(raw, raw)}"
+        return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{number(raw)}"
 
     return _DRIVER.sub(driver, _VEHICLE.sub(vehicle, text))
 

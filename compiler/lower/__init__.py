@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from sovarc.compiler.lower.assume import COMPASS, assume
 from sovarc.compiler.lower.centre import centre_lanes
 from sovarc.compiler.lower.consistency import check_headings
-from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, contacts, describe
+from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, Lines, contacts, describe
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.routes import DEFAULT_MOVES, vehicle_route
@@ -466,10 +466,11 @@ def _facts(scenario: Scenario, routes: dict[str, Route], limit: float, limit_fac
 def _no_contact(
     scenario: Scenario, match: SiteMatch, striker: Route, victim: Route, crash: CrashType
 ) -> list[Diagnostic]:
-    seen = contacts_any(striker, victim)
+    lines = Lines(striker, victim)  # every question below compares the same two lines
+    seen = contacts_any(striker, victim, lines)
     how = "; ".join(dict.fromkeys(describe(c) for c in seen)) or "their paths never meet"  # each wording once
     # a victim that leaves the lane they share (its line angles off it: a rear-end's crossing contact)
-    leaves = any(c.kind == "crossing" for c in contacts(striker, victim, CrashType.REAR_END))
+    leaves = any(c.kind == "crossing" for c in contacts(striker, victim, CrashType.REAR_END, lines=lines))
     if crash is CrashType.SIDE and leaves and any(c.kind == "shared" and c.sign == 1 for c in seen):
         s, v = striker.participant.id, victim.participant.id
         how += (
@@ -477,7 +478,7 @@ def _no_contact(
             f"more off the lane while still in {s}'s way"
         )
     turning = " and ".join(r.participant.id for r in (striker, victim) if any(not m.backing for m in r.manoeuvres))
-    if turning and contacts(striker, victim, crash, whole=True):
+    if turning and contacts(striker, victim, crash, whole=True, lines=lines):
         how = (
             f"they meet only while {turning} still turns in legs (a three-point turn), before its last change "
             "of gear; a crash is planned on its last forward leg or after it, never on a reverse leg"
@@ -494,10 +495,11 @@ def _no_contact(
     return diagnostics
 
 
-def contacts_any(striker: Route, victim: Route) -> list[Contact]:
+def contacts_any(striker: Route, victim: Route, lines: Lines | None = None) -> list[Contact]:
+    lines = lines if lines is not None else Lines(striker, victim)
     found: list[Contact] = []
     for crash in CrashType:
-        for c in contacts(striker, victim, crash):
+        for c in contacts(striker, victim, crash, lines=lines):
             if c not in found:
                 found.append(c)
     return found

@@ -9,6 +9,7 @@ import pytest
 from sovarc.compiler.geometry.angles import heading_vector
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.geometry.trailing import trailing_headings
+from sovarc.compiler.lower import contact
 from sovarc.compiler.lower.contact import (
     ALONG,
     CORNER_DEPTH,
@@ -215,3 +216,19 @@ def test_a_trailing_victim_struck_mid_turn_is_met_on_its_side_as_its_body_faces(
         lateral = abs(float(rel[0] * f[1] - rel[1] * f[0]))
         assert -0.1 <= back <= body.length + 0.1
         assert lateral <= (body.width + CAR.width) / 2.0
+
+
+def test_a_pairs_distances_are_made_once_for_every_crash_type_and_face(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`Lines` shares each pair of views' distance matrix among the crash types and faces asked of two
+    routes (a side crash tries three faces on one view of the victim), and answers as a fresh search."""
+    alone = {crash: contacts(NORTH, EAST, crash) for crash in CrashType}
+    made: list[int] = []
+    of = contact._Near.of
+    monkeypatch.setattr(contact._Near, "of", lambda a, b: made.append(1) or of(a, b))
+    lines = contact.Lines(NORTH, EAST)
+    shared = {crash: contacts(NORTH, EAST, crash, lines=lines) for crash in CrashType}
+    assert shared == alone
+    assert len(made) == 1  # one view of each: the striker's front, the victim's line
+    assert contacts(NORTH, EAST, CrashType.SIDE, whole=True, lines=lines) and len(made) == 1
+    with pytest.raises(AssertionError):
+        contacts(EAST, NORTH, CrashType.SIDE, lines=lines)  # another pair's question
