@@ -29,6 +29,7 @@ ideally has heading `orientation + 90 * k`. The site search rotates reports on t
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
@@ -114,7 +115,7 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
         if len(cluster.nodes) == 1:
             incoming_edges = [a.incoming for a in cluster.arms if a.incoming is not None]
             outgoing_ids = {a.outgoing.getID() for a in cluster.arms if a.outgoing is not None}
-            connections = _connections(roads, incoming_edges, outgoing_ids)
+            connections = _by_cross(_connections(roads, incoming_edges, outgoing_ids), arms)
         else:
             connections = _cluster_connections(roads, cluster, arms)
         if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
@@ -210,6 +211,21 @@ def _connections(roads: RoadNet, incoming: list[Any], outgoing_ids: set[str]) ->
                     via = path[0] if path else None
                     found.append(Connection(src.getID(), dst.getID(), link.getDirection(), via, path))
     return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
+
+
+def _by_cross(connections: tuple[Connection, ...], arms: list[Arm]) -> tuple[Connection, ...]:
+    """The connections with each turn named by the exit arm's place in the junction's compass cross,
+    as across a junction of several nodes. SUMO names a turn by its angle alone: where a junction is
+    skewed (a road bending through a T, a Y, a spider's ring) it may call the way to the opposite
+    arm a left or have no straight at all, while the site search places a scenario's moves by the
+    cross, and a move must lead where the cross says. A way back into the arm it came by keeps
+    SUMO's name: the arm's two edges may be two roads leaving side by side, not one road's two ways."""
+    slot = {lane.id: arm.slot for arm in arms for lane in arm.incoming + arm.outgoing}
+    named = []
+    for c in connections:
+        turn = (slot[c.to_lane] - slot[c.from_lane]) % 4
+        named.append(c if turn == 0 else replace(c, direction=TURNS[turn]))
+    return tuple(sorted(named, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
 
 
 def _cluster_connections(roads: RoadNet, cluster: Cluster, arms: list[Arm]) -> tuple[Connection, ...]:
