@@ -63,3 +63,15 @@ def test_a_side_crash_across_a_bent_t_is_staged_on_every_one(tmp_path: Path) -> 
     for one in lowered:
         moves = {t.participant: t for t in synthesize(one, seed=0).trajectories}
         assert set(moves) == {"V1", "V2"}
+
+
+def test_a_ring_road_gives_its_straight_sides(tmp_path: Path) -> None:
+    # a grid's perimeter is one road round the block, on through its T's: a ring has no first
+    # edge, and where its walk began decided which of its two directions staged it, each deferring
+    # to the other. Each of its four sides is a straight road.
+    road_map = generate(tmp_path, "--grid", "--grid.number", "3", "--grid.length", "200", "-L", "2")
+    straights = find_sites(road_map, S)
+    sides = [s for s in straights if s.min_length > 300.0]
+    assert len(sides) == 4 and all(s.arms[0].two_way and s.lanes == 2 for s in sides)
+    assert sorted(round(s.arms[0].heading) % 180 for s in sides) == [0, 0, 90, 90]
+    assert len(straights) == 4 + 4  # and the four roads inside, from the middle junction out
