@@ -47,6 +47,11 @@ if TYPE_CHECKING:
 
 DEFAULT_MIN_LENGTH = 80.0  # m; a straight site must be at least this long
 CROSS_TOLERANCE = 35.0  # degrees an intersection's or T's arm may stray from its place in the cross
+# ... and where every arm is a two-way road: two roads crossing at 50 degrees or more are still a
+# crossing a person sees (a ring road crossing the spokes of a town's radial streets meets them at
+# 54), and the moves across it are planned and replayed as at a square one. One-way arms that close
+# are how carriageways and ramps part and merge: a fork, no T.
+SKEW_TOLERANCE = 40.0
 # a turn by the exit arm's place in the cross, counted clockwise from the entry arm's (see search.py)
 TURNS = {0: "t", 1: "l", 2: "s", 3: "r"}
 ARM_REACH = 100.0  # m: a junction's arm reaches back this far through pass-through nodes (RoadNet.reach)
@@ -100,7 +105,8 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
         if len(raw) not in (3, 4):
             continue
         frame = fit_frame([heading for _, heading, _, _ in raw])
-        if frame.error > CROSS_TOLERANCE:
+        two_way = all(incoming and outgoing for _, _, incoming, outgoing in raw)
+        if frame.error > (SKEW_TOLERANCE if two_way else CROSS_TOLERANCE):
             continue  # three or four roads, but not a T or a cross
         arms = sorted(
             (

@@ -7,6 +7,7 @@ roundabout-like centres and skewed crossings a user's town has, which grids neve
 
 from __future__ import annotations
 
+import itertools
 import subprocess
 from pathlib import Path
 
@@ -43,10 +44,11 @@ def test_a_junction_names_each_turn_by_its_place_in_the_cross(tmp_path: Path) ->
     # the inner ring's junctions of a five-armed spider: the ring bends by 72 degrees at each and a
     # spoke comes in between, 126 degrees from both ring roads: SUMO calls every way through a
     # left or a right. The cross the search lays over them has a road through, and its way across
-    # must be a straight on, or no scenario can go straight over a T there.
+    # must be a straight on, or no scenario can go straight over a T there. (The outer ring's
+    # junctions, where the spokes end, are T's of the same shape.)
     road_map = spider(tmp_path, 5)
     tees = find_sites(road_map, T)
-    assert len(tees) == 5
+    assert len(tees) == 10
     for tee in tees:
         for c in tee.connections:
             entry, exit_ = tee.arm_of_lane(c.from_lane), tee.arm_of_lane(c.to_lane)
@@ -75,3 +77,20 @@ def test_a_ring_road_gives_its_straight_sides(tmp_path: Path) -> None:
     assert len(sides) == 4 and all(s.arms[0].two_way and s.lanes == 2 for s in sides)
     assert sorted(round(s.arms[0].heading) % 180 for s in sides) == [0, 0, 90, 90]
     assert len(straights) == 4 + 4  # and the four roads inside, from the middle junction out
+
+
+def test_roads_crossing_askew_are_a_cross(tmp_path: Path) -> None:
+    # the middle ring of a five-armed spider bends by 72 degrees where each spoke crosses it: the
+    # ring's roads meet the spoke at 54 degrees, a crossing askew; on the outer ring, where the
+    # spoke ends, a T whose through road bends by as much
+    road_map = spider(tmp_path, 5, circles=3)
+    crosses, tees = find_sites(road_map, X), find_sites(road_map, T)
+    assert len(crosses) == 5 and len(tees) == 10
+    for cross in crosses:
+        ring = [*cross.arms, cross.arms[0]]  # the arms clockwise, by their places in the cross
+        gaps = sorted(round((b.heading - a.heading) % 360) for a, b in itertools.pairwise(ring))
+        assert gaps == [54, 54, 126, 126]
+    lowered = lower(scenario("intersection_left_turn_across_path_side"), road_map, roads=5, seed=0)
+    assert len(lowered) == 5 and {one.match.site.id for one in lowered} == {c.id for c in crosses}
+    for one in lowered:
+        assert {t.participant for t in synthesize(one, seed=0).trajectories} == {"V1", "V2"}
