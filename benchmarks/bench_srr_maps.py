@@ -1,14 +1,18 @@
 """SRR per map: sites found per kind, reconstruction rate per kind, failures by class (issue 17).
 
-    .venv/bin/python benchmarks/bench_srr_maps.py TRUTH_DIR [--group dev|held-out|all] [--map NAME ...]
+    .venv/bin/python benchmarks/bench_srr_maps.py TRUTH_DIR [--group GROUP] [--map NAME ...]
         [--only GLOB] [--roads 3] [--seed 0] [--save DIR] [--reuse]
 
 TRUTH_DIR holds the shared ground-truth scenarios as .sov files
 (`sovarc import-truth ../shared/data/nmvccs/truth/*/*.json -o truth`). Each scenario is staged on
---roads sites of each map and replayed in SUMO, as `sovarc eval srr` does. The maps are the
-development maps (CARLA Town01, 02, 04; esmini's maps; the bundled town; SUMO's networks) and the
-held-out ones (CARLA Town06, 07), printed in separate groups: the held-out maps are for reporting,
-never for tuning. Also prints, per map, the CPU time of loading it and finding its sites. An SRR
+--roads sites of each map and replayed in SUMO, as `sovarc eval srr` does. GROUP picks the maps:
+- dev, held-out, all: the development maps (CARLA Town01, 02, 04; esmini's maps; the bundled town;
+  SUMO's networks) and the held-out ones (CARLA Town06, 07), printed in separate groups: the
+  held-out maps are for reporting, never for tuning;
+- generated: maps made at run time by SUMO's netgenerate, each as generated and round-tripped
+  through OpenDRIVE (netgen_maps.py), its development half (gen-dev) printed beside its held-out
+  half (gen-held-out); either half can be run alone.
+Also prints, per map, the CPU time of loading it and finding its sites. An SRR
 in brackets is of a kind the map has fewer than 3 sites of (no target there). Each SRR is printed
 over all scenario-sites / over those the map has a site of the needed shape for / over those less
 the scenarios whose record contradicts itself: a scenario-site the map has no site of the shape for
@@ -31,6 +35,8 @@ from collections import Counter
 from pathlib import Path
 
 from maps import named
+from netgen_maps import GROUPS
+from netgen_maps import maps as generated_maps
 from sovarc.compiler.evaluation.srr import (
     FAILURE_CLASSES,
     NO_SHAPE,
@@ -50,9 +56,13 @@ SHORT = {RoadKind.INTERSECTION: "X", RoadKind.T_JUNCTION: "T", RoadKind.STRAIGHT
 HELD_OUT = ("Town06", "Town07")  # for reporting, never for tuning
 
 
-def maps() -> dict[str, dict[str, Path]]:
-    """Every named map (`maps.named`): the development ones, then the held-out ones."""
-    every = named()
+def maps(group: str) -> dict[str, dict[str, Path]]:
+    """The maps of `group`, by group; the generated ones are made only when asked for."""
+    if group in GROUPS:
+        return {group: generated_maps(group)}
+    if group == "generated":
+        return {name: generated_maps(name) for name in GROUPS}
+    every = named()  # every named map (`maps.named`): the development ones, then the held-out ones
     return {
         "dev": {name: path for name, path in every.items() if name not in HELD_OUT},
         "held-out": {name: path for name, path in every.items() if name in HELD_OUT},
@@ -113,7 +123,7 @@ def table(group: str, results: list[dict]) -> str:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("truth", type=Path)
-    parser.add_argument("--group", choices=("dev", "held-out", "all"), default="dev")
+    parser.add_argument("--group", choices=("dev", "held-out", "all", "generated", *GROUPS), default="dev")
     parser.add_argument("--map", action="append", help="only maps of this name (repeatable)")
     parser.add_argument("--only", default="*", help="a glob on the scenarios' file names")
     parser.add_argument("--roads", type=int, default=3)
@@ -124,8 +134,8 @@ def main() -> None:
     files = sorted(args.truth.glob(f"{args.only}.sov"))
     scenarios = [(f, parse(f.read_text(encoding="utf-8"))) for f in files]
     print(f"{len(scenarios)} scenarios x {args.roads} sites, seed {args.seed}; sites s: CPU s to load and find sites")
-    for group, chosen in maps().items():
-        if args.group not in ("all", group):
+    for group, chosen in maps(args.group).items():
+        if args.group not in ("all", "generated", group):  # 'generated' is both generated halves
             continue
         picked = {n: p for n, p in chosen.items() if not args.map or n in args.map}
         if picked:

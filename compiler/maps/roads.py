@@ -211,6 +211,12 @@ class RoadNet:
         while (on := after(edges[-1])) is not None and on.getID() not in seen and not other_way(on):
             seen.add(on.getID())
             edges.append(on)
+        if (on := after(edges[-1])) is not None and on.getID() == edges[0].getID():
+            # a ring (a block's perimeter, a ring road) has no first edge: start it at its least id,
+            # so that its walk is the same from wherever it was found and its two directions agree
+            # which of them stages the road (straights.py)
+            start = min(range(len(edges)), key=lambda k: edges[k].getID())
+            edges = edges[start:] + edges[:start]
         return edges
 
     def reach(self, edge: Any, forward: bool, length: float) -> list[Any]:

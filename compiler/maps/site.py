@@ -22,7 +22,7 @@ class Connection:
 
     from_lane: str
     to_lane: str
-    direction: str  # SUMO: s straight, l/L left/partly left, r/R right/partly right, t turnaround
+    direction: str  # s straight, l/L left/partly left, r/R right/partly right, t turnaround (sites.py)
     via: str | None  # the first internal lane that carries it, if the network has one
     # every SUMO lane between from_lane and to_lane, in order: the internal lanes, and across a
     # junction of several nodes (clusters.py) the lanes of the short edges between them

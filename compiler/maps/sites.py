@@ -29,6 +29,7 @@ ideally has heading `orientation + 90 * k`. The site search rotates reports on t
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from sovarc.compiler.geometry.polyline import end_heading, start_heading
@@ -46,6 +47,11 @@ if TYPE_CHECKING:
 
 DEFAULT_MIN_LENGTH = 80.0  # m; a straight site must be at least this long
 CROSS_TOLERANCE = 35.0  # degrees an intersection's or T's arm may stray from its place in the cross
+# ... and where every arm is a two-way road: two roads crossing at 50 degrees or more are still a
+# crossing a person sees (a ring road crossing the spokes of a town's radial streets meets them at
+# 54), and the moves across it are planned and replayed as at a square one. One-way arms that close
+# are how carriageways and ramps part and merge: a fork, no T.
+SKEW_TOLERANCE = 40.0
 # a turn by the exit arm's place in the cross, counted clockwise from the entry arm's (see search.py)
 TURNS = {0: "t", 1: "l", 2: "s", 3: "r"}
 ARM_REACH = 100.0  # m: a junction's arm reaches back this far through pass-through nodes (RoadNet.reach)
@@ -99,7 +105,8 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
         if len(raw) not in (3, 4):
             continue
         frame = fit_frame([heading for _, heading, _, _ in raw])
-        if frame.error > CROSS_TOLERANCE:
+        two_way = all(incoming and outgoing for _, _, incoming, outgoing in raw)
+        if frame.error > (SKEW_TOLERANCE if two_way else CROSS_TOLERANCE):
             continue  # three or four roads, but not a T or a cross
         arms = sorted(
             (
@@ -114,7 +121,7 @@ def _junction_sites(roads: RoadNet) -> tuple[list[Site], int]:
         if len(cluster.nodes) == 1:
             incoming_edges = [a.incoming for a in cluster.arms if a.incoming is not None]
             outgoing_ids = {a.outgoing.getID() for a in cluster.arms if a.outgoing is not None}
-            connections = _connections(roads, incoming_edges, outgoing_ids)
+            connections = _by_cross(_connections(roads, incoming_edges, outgoing_ids), arms)
         else:
             connections = _cluster_connections(roads, cluster, arms)
         if not any(arm.two_way for arm in arms) and not streams_cross(arms, connections):
@@ -210,6 +217,21 @@ def _connections(roads: RoadNet, incoming: list[Any], outgoing_ids: set[str]) ->
                     via = path[0] if path else None
                     found.append(Connection(src.getID(), dst.getID(), link.getDirection(), via, path))
     return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
+
+
+def _by_cross(connections: tuple[Connection, ...], arms: list[Arm]) -> tuple[Connection, ...]:
+    """The connections with each turn named by the exit arm's place in the junction's compass cross,
+    as across a junction of several nodes. SUMO names a turn by its angle alone: where a junction is
+    skewed (a road bending through a T, a Y, a spider's ring) it may call the way to the opposite
+    arm a left or have no straight at all, while the site search places a scenario's moves by the
+    cross, and a move must lead where the cross says. A way back into the arm it came by keeps
+    SUMO's name: the arm's two edges may be two roads leaving side by side, not one road's two ways."""
+    slot = {lane.id: arm.slot for arm in arms for lane in arm.incoming + arm.outgoing}
+    named = []
+    for c in connections:
+        turn = (slot[c.to_lane] - slot[c.from_lane]) % 4
+        named.append(c if turn == 0 else replace(c, direction=TURNS[turn]))
+    return tuple(sorted(named, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
 
 
 def _cluster_connections(roads: RoadNet, cluster: Cluster, arms: list[Arm]) -> tuple[Connection, ...]:
