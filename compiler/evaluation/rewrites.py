@@ -16,6 +16,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
+
 _WORDS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
 _ORDINALS = ("zeroth", "first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth")
 _DIGIT_OF = {w: i for i, w in enumerate(_WORDS)}
@@ -296,18 +298,14 @@ _AS_TURN = {"made": "turned", "make": "turn", "makes": "turns", "making": "turni
 _AS_MAKE = {v: k for k, v in _AS_TURN.items()}
 
 
-def _case(like: str, word: str) -> str:
-    return word[0].upper() + word[1:] if like[0].isupper() else word
-
-
 def turn_verb(text: str) -> str:
     """ "made a left turn" -> "turned left", "making a right-hand turn" -> "turning right"."""
-    return _MAKE_TURN.sub(lambda m: f"{_case(m['verb'], _AS_TURN[m['verb'].lower()])} {m['side']}", text)
+    return _MAKE_TURN.sub(lambda m: f"{in_case_of(m['verb'], _AS_TURN[m['verb'].lower()])} {m['side']}", text)
 
 
 def turn_noun(text: str) -> str:
     """ "turned left" -> "made a left turn", "to turn right" -> "to make a right turn"."""
-    return _TURN_VERB.sub(lambda m: f"{_case(m['verb'], _AS_MAKE[m['verb'].lower()])} a {m['side']} turn", text)
+    return _TURN_VERB.sub(lambda m: f"{in_case_of(m['verb'], _AS_MAKE[m['verb'].lower()])} a {m['side']} turn", text)
 
 
 def turn_hand(text: str) -> str:
@@ -392,7 +390,7 @@ _EXECUTE = {"made": "executed", "make": "execute", "makes": "executes", "making"
 def turn_executed(text: str) -> str:
     """ "made a left turn" -> "executed a left turn"."""
     return _MAKE_TURN.sub(
-        lambda m: f"{_case(m['verb'], _EXECUTE[m['verb'].lower()])} {m.group()[len(m['verb']) + 1 :]}", text
+        lambda m: f"{in_case_of(m['verb'], _EXECUTE[m['verb'].lower()])} {m.group()[len(m['verb']) + 1 :]}", text
     )
 
 
@@ -487,8 +485,8 @@ def british_spelling(text: str) -> str:
     def one(m: re.Match[str]) -> str:
         word, end = _BRITISH[m[1].lower()], m[2] or ""
         if m[1].lower() == "maneuver" and end in ("ed", "ing"):
-            return _case(m[1], word[:-1]) + end  # manoeuvred, manoeuvring
-        return _case(m[1], word) + end
+            return in_case_of(m[1], word[:-1]) + end  # manoeuvred, manoeuvring
+        return in_case_of(m[1], word) + end
 
     return re.sub(r"\b(curb|maneuver|center|gray|tire)(s|ed|ing)?\b", one, text, flags=re.I)
 
@@ -496,79 +494,6 @@ def british_spelling(text: str) -> str:
 def carriageway(text: str) -> str:
     """ "the roadway" -> "the carriageway": the British word for the road's travelled way."""
     return re.sub(r"\b([Rr])oadway(s?)\b", lambda m: ("C" if m[1] == "R" else "c") + "arriageway" + m[2], text)
-
-
-# ---- tense ------------------------------------------------------------------------------------------------
-# Some narratives tell the crash in the present ("V1 is traveling north ... V2 turns left and strikes V1"). The
-# past forms of the verbs crash narratives use, and their present (third person); a past participle after a
-# form of "be" or "have", an article or "to" stays ("was stopped", "a stopped car", "had slowed").
-_PRESENT = {
-    "was": "is",
-    "were": "are",
-    "had": "has",
-    "struck": "strikes",
-    "came": "comes",
-    "made": "makes",
-    "began": "begins",
-    "drove": "drives",
-    "saw": "sees",
-    "went": "goes",
-    "ran": "runs",
-    "stated": "states",
-    "turned": "turns",
-    "stopped": "stops",
-    "slowed": "slows",
-    "braked": "brakes",
-    "steered": "steers",
-    "swerved": "swerves",
-    "entered": "enters",
-    "accelerated": "accelerates",
-    "attempted": "attempts",
-    "started": "starts",
-    "changed": "changes",
-    "pulled": "pulls",
-    "backed": "backs",
-    "continued": "continues",
-    "passed": "passes",
-    "merged": "merges",
-    "approached": "approaches",
-    "impacted": "impacts",
-    "contacted": "contacts",
-    "proceeded": "proceeds",
-    "traveled": "travels",
-    "travelled": "travels",
-    "crossed": "crosses",
-    "failed": "fails",
-    "departed": "departs",
-    "rotated": "rotates",
-    "collided": "collides",
-    "occurred": "occurs",
-    "looked": "looks",
-    "yielded": "yields",
-    "moved": "moves",
-    "veered": "veers",
-}
-_PAST = re.compile(r"\b(?:" + "|".join(_PRESENT) + r")\b", re.I)
-_PARTICIPLE_AFTER = re.compile(
-    r"\b(?:was|were|is|are|be|been|being|had|has|have|a|an|the|to|not|just)\s+(?:\w+ly\s+)?$", re.I
-)
-
-
-def present_tense(text: str) -> str:
-    """ "V1 was traveling north when V2 turned left and struck V1" -> "V1 is traveling north when V2 turns left
-    and strikes V1"."""
-
-    def one(m: re.Match[str]) -> str:
-        word = m.group()
-        if _PARTICIPLE_AFTER.search(text[max(0, m.start() - 30) : m.start()]) and word.lower() not in (
-            "was",
-            "were",
-            "had",
-        ):
-            return word
-        return _case(word, _PRESENT[word.lower()])
-
-    return _PAST.sub(one, text)
 
 
 REWRITES: dict[str, Callable[[str], str]] = {
