@@ -44,7 +44,8 @@ def console_errors(stderr: str) -> list[str]:
 
 def test_the_report_opens_plays_and_shows_its_cards_in_chromium(run_out: Path, tmp_path: Path) -> None:
     url = (run_out / REPORT).resolve().as_uri()
-    dom = chromium(tmp_path, "--virtual-time-budget=4000", "--dump-dom", url)
+    # only the canvases on screen play (a batch's page may hold hundreds): a window tall enough for both cards
+    dom = chromium(tmp_path, "--window-size=1280,4000", "--virtual-time-budget=4000", "--dump-dom", url)
     assert dom.returncode == 0, dom.stderr[-2000:]
     assert console_errors(dom.stderr) == []
     page = Page(dom.stdout)
