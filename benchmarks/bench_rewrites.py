@@ -25,6 +25,7 @@ import re
 from dataclasses import replace
 from pathlib import Path
 
+from maps import SHARED
 from sovarc.compiler.evaluation import extraction
 from sovarc.compiler.evaluation.folds import split
 from sovarc.compiler.evaluation.rewrites import REWRITES
@@ -34,7 +35,7 @@ from sovarc.dsl import to_text
 from sovarc.dsl.ir import Scenario
 from sovarc.dsl.span import Source
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "nmvccs"
+DATA = SHARED / "data" / "nmvccs"  # $SOVARC_SHARED, as every benchmark reads it
 COLUMNS = ("mean", "DrivingActions", "CrashType", "Striker")
 
 

@@ -28,6 +28,11 @@ _TURN = (
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
     r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
 )
+# The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
+# in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
+# from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
+# on the left"; "made a left turn in front of V1. As it passed V1, ..."), as NHTSA codes it.
+_DRIVING_ON = re.compile(r"\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b", re.I)
 _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     # Backing: "backed out of a driveway", "was reversing", "began to back up", "put the car in reverse".
     # "Traffic was backed up" is a queue, not a move.
@@ -172,9 +177,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
             r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
-            r"|\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
-            r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b",
+            r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
+            # closing on another from behind (see _DRIVING_ON)
+            r"|" + _DRIVING_ON.pattern,
             re.I,
         ),
     ),
@@ -223,11 +229,6 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
 _IN_OPPOSING = re.compile(
     r"\b(?:in|from|within) (?:the|an|a) (?:oncoming|opposing|opposite)(?: traffic| travel)? lanes?\b", re.I
 )
-# The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
-# in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
-# from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
-# on the left"; "made a left turn in front of V1. As it passed V1, ..."), as NHTSA codes it.
-_DRIVING_ON = re.compile(r"\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b", re.I)
 # Going straight is crossing only where the vehicle's own sentences put it at the junction.
 _STRAIGHT = re.compile(
     r"\bgo(?:ing|es)? straight\b|\bstraight (?:through|thru|across|ahead)\b|\bcontinu(?:ed|ing|es|e) straight\b"

@@ -70,10 +70,9 @@ _AGENT = re.compile(
 _AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
-_PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended)\b", re.I)
-_PATIENT = re.compile(
-    r"\b(?P<v>" + _V + r")\b (?:was|were) (?:\w+ )?(?:struck|hit|impacted|contacted|rear-ended) by [^.;,]*$", re.I
-)
+_STRUCK = r"(?:struck|hit|impacted|contacted|rear-ended)"  # the participles of a passive strike
+_PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?" + _STRUCK + r"\b", re.I)
+_PATIENT = re.compile(r"\b(?P<v>" + _V + r")\b (?:was|were) (?:\w+ )?" + _STRUCK + r" by [^.;,]*$", re.I)
 _REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?:the )?" + _STATE + r"(?P<b>" + _V + r")\b", re.I)
 _UNTIED_PART = re.compile(r"\b(?:front|rear|side|bumper|corner|end)\b", re.I)
 _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
