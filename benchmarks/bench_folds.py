@@ -23,6 +23,7 @@ import re
 from collections import Counter
 from pathlib import Path
 
+from maps import SHARED
 from sovarc.compiler.evaluation import coded, extraction
 from sovarc.compiler.evaluation.folds import split
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
@@ -30,7 +31,7 @@ from sovarc.compiler.frontend.truth import import_truth_file
 from sovarc.dsl import read_source
 from sovarc.dsl.ir import Scenario, Unknown
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "nmvccs"
+DATA = SHARED / "data" / "nmvccs"  # $SOVARC_SHARED, as every benchmark reads it
 
 
 def _extract(front_end: FrontEnd, data: Path, names: list[str]) -> dict[str, Scenario | None]:

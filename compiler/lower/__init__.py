@@ -423,8 +423,8 @@ def _driveway_side(p: Participant, scenario: Scenario, striker: str, victim: str
     other = scenario.participant(victim if p.id == striker else striker)
     if other is None or not isinstance(other.heading, Heading) or not isinstance(p.heading, Heading):
         return Side.RIGHT
-    opposite = {"north": "south", "south": "north", "east": "west", "west": "east"}
-    return Side.LEFT if opposite[p.heading.value] == other.heading.value else Side.RIGHT
+    facing = (COMPASS.index(p.heading) - COMPASS.index(other.heading)) % 4 == 2
+    return Side.LEFT if facing else Side.RIGHT
 
 
 def _facts(scenario: Scenario, routes: dict[str, Route], limit: float, limit_fact: Fact) -> dict[str, Fact]:

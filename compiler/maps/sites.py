@@ -219,6 +219,11 @@ def _connections(roads: RoadNet, incoming: list[Any], outgoing_ids: set[str]) ->
     return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
 
 
+def _cross_turn(entry_slot: int, exit_slot: int) -> str:
+    """SUMO's name of the turn from the arm in `entry_slot` of a compass cross to the one in `exit_slot`."""
+    return TURNS[(exit_slot - entry_slot) % 4]
+
+
 def _by_cross(connections: tuple[Connection, ...], arms: list[Arm]) -> tuple[Connection, ...]:
     """The connections with each turn named by the exit arm's place in the junction's compass cross,
     as across a junction of several nodes. SUMO names a turn by its angle alone: where a junction is
@@ -230,7 +235,7 @@ def _by_cross(connections: tuple[Connection, ...], arms: list[Arm]) -> tuple[Con
     named = []
     for c in connections:
         turn = (slot[c.to_lane] - slot[c.from_lane]) % 4
-        named.append(c if turn == 0 else replace(c, direction=TURNS[turn]))
+        named.append(c if turn == 0 else replace(c, direction=_cross_turn(slot[c.from_lane], slot[c.to_lane])))
     return tuple(sorted(named, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
 
 
@@ -247,7 +252,7 @@ def _cluster_connections(roads: RoadNet, cluster: Cluster, arms: list[Arm]) -> t
             for to, path, edges in paths(roads, cluster, start, set(exits)):
                 if not to.allows(CAR):
                     continue
-                direction = TURNS[(exits[to.getEdge().getID()].slot - arm.slot) % 4]
+                direction = _cross_turn(arm.slot, exits[to.getEdge().getID()].slot)
                 via = next((x for x in path if x.startswith(":")), None)
                 found.append(Connection(lane.id, to.getID(), direction, via, path, edges))
     return tuple(sorted(found, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
