@@ -36,23 +36,37 @@ _OTHER_CRASH = re.compile(
 def refuse(text: str, name: str, named: str | None = None) -> None:
     """Raise FrontEndError when the text is not one report of one crash; `named` is its prepared text, when the
     caller has it."""
-    if len(_OPENING.findall(text)) > 1 or _blocks_with_impacts(text) > 1:
+    named = prepare(text) if named is None else named
+    if len(_OPENING.findall(text)) > 1 or _blocks_with_impacts(text) > 1 or _reintroduced(named):
         raise FrontEndError(
-            f"{name}: the file holds more than one report (each report opens with its own date and time, or "
-            "the reports are separated by a line); give one report per file; nothing to extract"
+            f"{name}: the file holds more than one report (each report opens with its own date and time, the "
+            "reports are separated by a line, or a vehicle label is introduced twice as two different vehicles); "
+            "give one report per file; nothing to extract"
         )
     if m := _OTHER_CRASH.search(text):
         raise FrontEndError(
             f"{name}: the report describes several crashes ('{m.group()}'); a scenario holds one crash: give "
             "each crash its own report; nothing to extract"
         )
-    named = prepare(text) if named is None else named
     # (a text that names no road user at all gets the front end's own refusal, which says what it looked for)
     if re.search(r"\b[VP]\d\b", named) and first_impact(sentences(named)) < 0 and not says_impact(text):
         raise FrontEndError(
             f"{name}: the report describes no crash: no sentence says that road users met (struck, collided, "
             "made contact, ...); nothing to extract"
         )
+
+
+# A road user introduced with its model year and make: "V1, a 2003 Honda Pilot", "V2 a 1992 GMC".
+_INTRODUCED = re.compile(r"\b([VP]\d+)\b,? an? (\d{4}) ([A-Z][\w-]*)")
+
+
+def _reintroduced(named: str) -> bool:
+    """Whether one label is introduced as two different vehicles (another year or make): a report introduces
+    each road user once, so the second introduction opens another report run on after the first."""
+    seen: dict[str, set[tuple[str, str]]] = {}
+    for label, year, make in _INTRODUCED.findall(named):
+        seen.setdefault(label, set()).add((year, make.lower()))
+    return any(len(vehicles) > 1 for vehicles in seen.values())
 
 
 def _blocks_with_impacts(text: str) -> int:

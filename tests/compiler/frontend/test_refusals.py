@@ -15,6 +15,12 @@ CRASH = (
     "A passenger car approached from behind and made contact with the rear bumper of the Waymo AV."
 )
 
+# A police narrative of our own: each vehicle introduced once with its model year and make.
+POLICE = (
+    "Vehicle 1, a 2004 Ford Focus, was traveling north in lane one. Vehicle 2, a 2011 Kia Rio, was stopped ahead "
+    "in the same lane. The front of Vehicle 1 struck the rear of Vehicle 2."
+)
+
 
 def extract(text: str, name: str = "r.txt") -> object:
     return FrontEnd("none").extract(Source(name, text)).scenario
@@ -22,6 +28,11 @@ def extract(text: str, name: str = "r.txt") -> object:
 
 def test_one_crash_is_read() -> None:
     extract(CRASH)
+
+
+def test_a_vehicle_introduced_again_as_itself_is_one_report() -> None:
+    # the same year and make said twice (the make in other case) is the same vehicle, not a second report
+    extract(POLICE + " Vehicle 1, a 2004 FORD, came to rest in the median.")
 
 
 @pytest.mark.parametrize(
@@ -34,6 +45,10 @@ def test_one_crash_is_read() -> None:
         ("V1 was traveling north when V2 turned left in front of it. V1 braked and did not strike V2.", "no crash"),
         (CRASH + "\n" + CRASH.replace("1:26 PM", "4:40 PM"), "more than one report"),
         (CRASH + "\n-----\n" + "V1 was traveling north when V2 struck the rear of V1.", "more than one report"),
+        (
+            POLICE + " " + POLICE.replace("2004 Ford", "1998 Dodge").replace("2011 Kia", "2001 Buick"),
+            "more than one report",
+        ),
         (CRASH + " In a separate incident later that day, the Waymo AV was struck by an SUV.", "several crashes"),
         ("El vehículo autónomo estaba detenido cuando un coche lo golpeó por detrás en la calle.", "English"),
     ],
