@@ -64,10 +64,10 @@ def _undate(path: Path) -> None:
     path.write_text(re.sub(r'(<header\b[^>]*?)\s+date="[^"]*"', r"\1", text, count=1), encoding="utf-8")
 
 
-def generate(name: str) -> dict[str, Path]:
-    """The network `name` as netgenerate writes it (`name`) and round-tripped through OpenDRIVE
-    (`name.xodr`), made now unless cached."""
-    options = [*NETWORKS[name], "--seed", str(SEED)]
+def generate(name: str, network: tuple[str, ...] | None = None, seed: int = SEED) -> dict[str, Path]:
+    """The network `name` (netgenerate's options `network`, else NETWORKS[name]) as netgenerate writes it
+    (`name`) and round-tripped through OpenDRIVE (`name.xodr`), made now unless cached."""
+    options = [*(NETWORKS[name] if network is None else network), "--seed", str(seed)]
     version = subprocess.run([str(BIN / "netgenerate"), "--version"], capture_output=True, text=True).stdout
     key = hashlib.sha256("\0".join(["undated", version.splitlines()[0], *options]).encode()).hexdigest()[:12]
     folder = cache_dir() / f"{name}-{key}"

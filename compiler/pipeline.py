@@ -27,7 +27,8 @@ from sovarc.compiler.frontend import extract_report
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.lower.assume import assume
 from sovarc.compiler.lower.consistency import check_headings
-from sovarc.compiler.maps import RoadMap, SiteMatch, load_map, match_sites
+from sovarc.compiler.maps import RoadMap, SiteMatch, load_map, match_sites, planning_map
+from sovarc.compiler.maps.lefthand import mirror_plan
 from sovarc.compiler.plan_text import render_plan
 from sovarc.compiler.slots import SiteResult, default_spare, fill_slots, folder_name, summary
 from sovarc.compiler.staging import stage_on_site
@@ -79,6 +80,7 @@ class Sites:
     road_map: RoadMap
     candidates: tuple[SiteMatch, ...]
     roads: int
+    planning: RoadMap  # the map the candidates are on: `road_map`, or its mirror image where traffic keeps left
 
 
 @dataclass(frozen=True)
@@ -142,8 +144,9 @@ def default_map() -> Path:
 def _sites(assumed: Assumed, options: Options, log: RunLog) -> Sites:
     road_map = options.map if isinstance(options.map, RoadMap) else load_map(options.map or default_map())
     spare = default_spare(options.roads) if options.spare is None else options.spare
-    found = match_sites(assumed.scenario, road_map, n=options.roads + spare, seed=options.seed, clamp=True)
-    return Sites(assumed, road_map, tuple(found), options.roads)
+    planning = planning_map(road_map)
+    found = match_sites(assumed.scenario, planning, n=options.roads + spare, seed=options.seed, clamp=True)
+    return Sites(assumed, road_map, tuple(found), options.roads, planning)
 
 
 def _render_sites(sites: Sites) -> str:
@@ -158,8 +161,10 @@ def _stage(job: SiteJob, options: Options, log: RunLog) -> SiteResult:
     """The staging search on one site; a failure is kept as the result's error."""
     assumed, match = job.sites.assumed, job.match
     result = SiteResult(match.site.id, road_map=job.sites.road_map)
+    planning = job.sites.planning
     try:
-        result.plan = stage_on_site(assumed.scenario, list(assumed.notes), job.sites.road_map, match, seed=options.seed)
+        plan = stage_on_site(assumed.scenario, list(assumed.notes), planning, match, seed=options.seed)
+        result.plan = mirror_plan(plan) if planning.mirrored else plan
     except SovarcError as exc:
         result.error = exc
     except Exception as exc:  # a defect met on this site's geometry: said, and the next site is tried

@@ -90,8 +90,9 @@ def actors_of(plan: Plan) -> list[Actor]:
 
 def lanes_in(road_map: RoadMap, view: View) -> Lanes:
     """Each lane near the view as an outline; on a road (not a junction), its lane lines: a solid edge
-    line at the right, dashed dividers between lanes of one direction, and at the left a centre line
-    (yellow) where traffic comes the other way, else an edge line."""
+    line at the kerb (the right; the left where traffic keeps left), dashed dividers between lanes of one
+    direction, and on the other side a centre line (yellow) where traffic comes the other way, else an
+    edge line."""
     asphalt, walkways, crossings, lines = [], [], [], []
     for edge in sorted(road_map.net.getEdges(withInternal=True), key=lambda e: e.getID()):
         lanes = edge.getLanes()
@@ -116,12 +117,14 @@ def lanes_in(road_map: RoadMap, view: View) -> Lanes:
                 (walkways if _walkway(lane) else asphalt).append(outline)
             if internal or _walkway(lane):
                 continue
+            # lane 0 is at the kerb: on the right, or on the left where traffic keeps left
+            kerb, inner = (left, right) if road_map.keeps_left else (right, left)
             if lane is driving[0]:
-                lines.append(("edge", _shape(right)))
+                lines.append(("edge", _shape(kerb)))
             if lane is driving[-1]:
-                lines.append(("centre" if opposite else "edge", _shape(left)))
+                lines.append(("centre" if opposite else "edge", _shape(inner)))
             else:
-                lines.append(("divider", _shape(left)))
+                lines.append(("divider", _shape(inner)))
     return Lanes(tuple(asphalt), tuple(walkways), tuple(crossings), tuple(lines))
 
 

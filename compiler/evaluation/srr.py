@@ -23,7 +23,7 @@ from typing import Any
 import sovarc.targets.registry as registry
 from sovarc.compiler.batch.tasks import worker_map
 from sovarc.compiler.lower.assume import assume
-from sovarc.compiler.maps import RoadMap, find_sites, has_shape, scenario_needs
+from sovarc.compiler.maps import RoadMap, find_sites, has_shape, planning_map, scenario_needs
 from sovarc.compiler.maps.search import KIND_NAMES
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.compiler.plan import Plan
@@ -138,7 +138,7 @@ def _lacking(scenario: Scenario, road_map: RoadMap, rows: list[Row], roads: int)
         return rows  # facts no road can reconcile: the record's failure, not the map's
     kind = scenario.road.kind if isinstance(scenario.road.kind, RoadKind) else None
     needs = scenario_needs(scenario)
-    sites = find_sites(road_map, kind)
+    sites = find_sites(planning_map(road_map), kind)  # as the search saw it: a left-hand map's mirror
     shaped = {site.id for site in sites if has_shape(site, needs)}
     short = roads - len(shaped)
     if short <= 0:

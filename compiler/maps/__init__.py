@@ -6,7 +6,7 @@ sites = find_sites(road_map, RoadKind.T_JUNCTION)
 matches = match_sites(scenario, road_map, n=3, seed=0)
 """
 
-from sovarc.compiler.maps.load import RoadMap, load_map
+from sovarc.compiler.maps.load import RoadMap, load_map, planning_map
 from sovarc.compiler.maps.needs import Need, scenario_needs
 from sovarc.compiler.maps.netconvert import ToolError, convert_opendrive
 from sovarc.compiler.maps.networks import network_of, with_opendrive
@@ -39,6 +39,7 @@ __all__ = [
     "match_sites",
     "network_of",
     "pick_diverse",
+    "planning_map",
     "scenario_needs",
     "site_rotations",
     "with_opendrive",

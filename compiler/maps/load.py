@@ -10,11 +10,12 @@ import hashlib
 import os
 import re
 import xml.sax
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, NoReturn
 from xml.etree import ElementTree
 
+from sovarc.compiler.maps.lefthand import keeps_left, mirrored_network
 from sovarc.compiler.maps.netconvert import ToolError, netconvert_version
 from sovarc.compiler.maps.networks import network_of
 from sovarc.compiler.plan import Network
@@ -50,6 +51,8 @@ class RoadMap:
     net: Net
     network: Network
     cache: dict[Any, Any] = field(default_factory=dict, repr=False)  # find_sites' results, per min_length
+    keeps_left: bool = False  # left-hand traffic: planned on as its mirror image (`planning_map`)
+    mirrored: bool = False  # `net` is the mirror image of the network the map's file describes
 
     @property
     def name(self) -> str:
@@ -68,9 +71,22 @@ def load_map(path: str | os.PathLike[str]) -> RoadMap:
     digest = hashlib.sha256(data).hexdigest()
     network = network_of(source, digest)
     net = _read_net(Path(network.sumo), source)
+    left = keeps_left(Path(network.sumo))
     if fmt == "sumo":
-        return RoadMap(source, fmt, digest, _generator(data), None, net, network)
-    return RoadMap(source, fmt, digest, _opendrive_origin(rest), netconvert_version(), net, network)
+        return RoadMap(source, fmt, digest, _generator(data), None, net, network, keeps_left=left)
+    return RoadMap(source, fmt, digest, _opendrive_origin(rest), netconvert_version(), net, network, keeps_left=left)
+
+
+def planning_map(road_map: RoadMap) -> RoadMap:
+    """The map lowering and synthesis plan on: the map itself, or for left-hand traffic its mirror image
+    (`lefthand.py`), whose plans `lefthand.mirror_plan` puts back onto the map. Made once per map."""
+    if not road_map.keeps_left:
+        return road_map
+    if "mirror" not in road_map.cache:
+        image = mirrored_network(Path(road_map.network.sumo), road_map.sha256)
+        net = _read_net(image, road_map.path)
+        road_map.cache["mirror"] = replace(road_map, net=net, cache={}, keeps_left=False, mirrored=True)
+    return road_map.cache["mirror"]
 
 
 def _fail(source: Path, message: str) -> NoReturn:

@@ -63,9 +63,11 @@ def run_netconvert(args: Sequence[str], source: str | os.PathLike[str]) -> None:
         raise _input_error(source, f"netconvert failed: {reason}")
 
 
-def convert_opendrive(xodr: str | os.PathLike[str], out: str | os.PathLike[str]) -> None:
-    """Convert an OpenDRIVE file to a SUMO network, keeping its coordinates (no offset)."""
+def convert_opendrive(xodr: str | os.PathLike[str], out: str | os.PathLike[str], *, lefthand: bool = False) -> None:
+    """Convert an OpenDRIVE file to a SUMO network, keeping its coordinates (no offset); `lefthand` for
+    a map whose traffic keeps left (its roads' `rule="LHT"`)."""
     args = ["--opendrive-files", str(xodr), "--offset.disable-normalization", "true", "-o", str(out)]
+    args += ["--lefthand", "true"] if lefthand else []
     run_netconvert([*args, "--xml-validation", "never", "--no-warnings", "true"], xodr)
 
 

@@ -30,6 +30,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.maps.lefthand import opendrive_keeps_left
 from sovarc.compiler.maps.netconvert import convert_opendrive, netconvert_version, run_netconvert
 from sovarc.compiler.plan import Network
 from sovarc.dsl.errors import Diagnostic, InputError
@@ -76,12 +77,13 @@ def with_opendrive(network: Network) -> Network:
 
 def sumo_network(xodr: Path, sha256: str) -> Path:
     """The cached `.net.xml` netconvert makes of an OpenDRIVE file (made now if not cached yet)."""
-    target = _cached(sha256, xodr.name[: -len(OPENDRIVE_SUFFIX)] + SUMO_SUFFIX)
+    left = opendrive_keeps_left(xodr)
+    target = _cached(sha256, xodr.name[: -len(OPENDRIVE_SUFFIX)] + ("-lht" if left else "") + SUMO_SUFFIX)
     if target.is_file():
         return target
     with tempfile.TemporaryDirectory(prefix="sovarc-net-") as tmp:
         made = Path(tmp) / target.name
-        convert_opendrive(xodr, made)
+        convert_opendrive(xodr, made, lefthand=left)
         return _store(target, made.read_bytes())
 
 

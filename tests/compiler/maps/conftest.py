@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import subprocess
 from pathlib import Path
 
 import pytest
 from sovarc.compiler.maps import RoadMap, load_map
+from sovarc.compiler.maps.netconvert import netconvert_path
 from sovarc.dsl import Scenario, parse
 
 from tests.conftest import EXAMPLES, SHARED, requires_shared
@@ -19,6 +21,15 @@ def osm_path() -> Path:
     import sumo
 
     return Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
+
+
+def generate(tmp_path: Path, *options: str) -> RoadMap:
+    """A network SUMO's netgenerate makes (seeded, so the same every run), written to `tmp_path`."""
+    netgenerate = Path(netconvert_path()).with_name("netgenerate")
+    out = tmp_path / "g.net.xml"
+    command = [str(netgenerate), *options, "--seed", "1", "--no-warnings", "true", "-o", out.name]
+    subprocess.run(command, cwd=tmp_path, check=True, capture_output=True)
+    return load_map(out)
 
 
 def scenario(name: str) -> Scenario:

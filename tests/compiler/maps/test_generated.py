@@ -8,31 +8,20 @@ roundabout-like centres and skewed crossings a user's town has, which grids neve
 from __future__ import annotations
 
 import itertools
-import subprocess
 from pathlib import Path
 
 import pytest
 from sovarc.compiler.lower import lower
-from sovarc.compiler.maps import RoadMap, find_sites, load_map
-from sovarc.compiler.maps.netconvert import netconvert_path
+from sovarc.compiler.maps import RoadMap, find_sites
 from sovarc.compiler.maps.sites import TURNS
 from sovarc.compiler.synth import synthesize
 from sovarc.dsl.ir import RoadKind
 
-from tests.compiler.maps.conftest import scenario
+from tests.compiler.maps.conftest import generate, scenario
 
 pytestmark = pytest.mark.slow  # needs SUMO
 
 X, T, S = RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT
-
-
-def generate(tmp_path: Path, *options: str) -> RoadMap:
-    """A netgenerate network (seeded, so the same every run)."""
-    netgenerate = Path(netconvert_path()).with_name("netgenerate")
-    out = tmp_path / "g.net.xml"
-    command = [str(netgenerate), *options, "--seed", "1", "--no-warnings", "true", "-o", out.name]
-    subprocess.run(command, cwd=tmp_path, check=True, capture_output=True)
-    return load_map(out)
 
 
 def spider(tmp_path: Path, arms: int, circles: int = 2) -> RoadMap:
