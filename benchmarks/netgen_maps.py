@@ -69,15 +69,22 @@ def generate(name: str, network: tuple[str, ...] | None = None, seed: int = SEED
     (`name`) and round-tripped through OpenDRIVE (`name.xodr`), made now unless cached."""
     options = [*(NETWORKS[name] if network is None else network), "--seed", str(seed)]
     version = subprocess.run([str(BIN / "netgenerate"), "--version"], capture_output=True, text=True).stdout
-    key = hashlib.sha256("\0".join(["undated", version.splitlines()[0], *options]).encode()).hexdigest()[:12]
+    key = hashlib.sha256("\0".join(["undated-lht", version.splitlines()[0], *options]).encode()).hexdigest()[:12]
     folder = cache_dir() / f"{name}-{key}"
     net, xodr = folder / f"{name}.net.xml", folder / f"{name}.xodr"
     if not xodr.is_file():
         folder.mkdir(parents=True, exist_ok=True)
         _run("netgenerate", [*options, "-o", net.name], folder)
         _undate(net)
-        _run("netconvert", ["--sumo-net-file", net.name, "--opendrive-output", "tmp.xodr"], folder)
+        left = "--lefthand" in options
+        # a left-hand network as OpenDRIVE has it: its lanes on the left of each road's reference line,
+        # driven along it, and every road marked rule="LHT" (which netconvert does not write)
+        lanes = ["--opendrive-output.lefthand-left", "true"] if left else []
+        _run("netconvert", ["--sumo-net-file", net.name, "--opendrive-output", "tmp.xodr", *lanes], folder)
         _undate(folder / "tmp.xodr")
+        if left:
+            text = (folder / "tmp.xodr").read_text(encoding="utf-8")
+            (folder / "tmp.xodr").write_text(re.sub(r"<road\b", '<road rule="LHT"', text), encoding="utf-8")
         (folder / "tmp.xodr").replace(xodr)  # last, so a cut-off run leaves no half-made pair
     return {name: net, f"{name}.xodr": xodr}
 
