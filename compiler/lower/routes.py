@@ -193,6 +193,14 @@ def _through_junction(
     approach = tuple(lane for lane in own if lane.id in drive.lanes)
     exit_line = exit_corridor.own_line(exit_number)
     joins = exit_line.project(turn.point(turn.length))[0]  # a U-turn may join its lane past the start
+    if joins > exit_line.length - 0.05:  # the way across ends where the exit lane does: no road leads on
+        raise LoweringError(
+            Diagnostic(
+                f"{p.id}'s way across {site.id} ends at the end of the lane it leads into, not on a road that "
+                "goes on (the map's lanes there may run the other way)",
+                p.meta.where("heading"),
+            )
+        )
     if joins > 0.5:
         exit_line = exit_line.sub(joins, exit_line.length)
     drive.line = concat([drive.line, turn, exit_line])

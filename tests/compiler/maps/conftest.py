@@ -23,11 +23,11 @@ def osm_path() -> Path:
     return Path(sumo.SUMO_HOME) / "tools" / "game" / "DRT" / "osm.net.xml"
 
 
-def generate(tmp_path: Path, *options: str) -> RoadMap:
+def generate(tmp_path: Path, *options: str, seed: int = 1) -> RoadMap:
     """A network SUMO's netgenerate makes (seeded, so the same every run), written to `tmp_path`."""
     netgenerate = Path(netconvert_path()).with_name("netgenerate")
     out = tmp_path / "g.net.xml"
-    command = [str(netgenerate), *options, "--seed", "1", "--no-warnings", "true", "-o", out.name]
+    command = [str(netgenerate), *options, "--seed", str(seed), "--no-warnings", "true", "-o", out.name]
     subprocess.run(command, cwd=tmp_path, check=True, capture_output=True)
     return load_map(out)
 
