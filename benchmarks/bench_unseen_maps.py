@@ -41,6 +41,10 @@ KINDS = (RoadKind.INTERSECTION, RoadKind.T_JUNCTION, RoadKind.STRAIGHT)
 DEFECT = "failed on this site's geometry"
 
 
+def _pairs(*pairs: tuple[str, object]) -> tuple[str, ...]:
+    return tuple(part for name, value in pairs for part in (name, str(value)))
+
+
 def network(seed: int) -> tuple[str, tuple[str, ...]]:
     """A network's name and netgenerate options, drawn from `seed` alone."""
     draw = random.Random(seed)
@@ -48,37 +52,32 @@ def network(seed: int) -> tuple[str, tuple[str, ...]]:
     if style == "grid":
         shape = (
             "--grid",
-            "--grid.x-number",
-            str(draw.randint(3, 5)),
-            "--grid.y-number",
-            str(draw.randint(3, 5)),
-            "--grid.x-length",
-            str(draw.choice((60, 90, 150, 300))),
-            "--grid.y-length",
-            str(draw.choice((60, 90, 150, 300))),
+            *_pairs(
+                ("--grid.x-number", draw.randint(3, 5)),
+                ("--grid.y-number", draw.randint(3, 5)),
+                ("--grid.x-length", draw.choice((60, 90, 150, 300))),
+                ("--grid.y-length", draw.choice((60, 90, 150, 300))),
+            ),
         )
     elif style == "spider":
         shape = (
             "--spider",
-            "--spider.arm-number",
-            str(draw.randint(3, 7)),
-            "--spider.circle-number",
-            str(draw.randint(2, 4)),
-            "--spider.space-radius",
-            str(draw.choice((70, 100, 150))),
-            *(("--spider.omit-center",) if draw.random() < 0.5 else ()),
+            *_pairs(
+                ("--spider.arm-number", draw.randint(3, 7)),
+                ("--spider.circle-number", draw.randint(2, 4)),
+                ("--spider.space-radius", draw.choice((70, 100, 150))),
+            ),
         )
+        shape += ("--spider.omit-center",) if draw.random() < 0.5 else ()
     else:
         shape = (
             "--rand",
-            "--rand.iterations",
-            str(draw.randint(30, 80)),
-            "--rand.min-distance",
-            str(draw.choice((60, 100, 150))),
-            "--rand.max-distance",
-            str(draw.choice((200, 300, 400))),
-            "--rand.min-angle",
-            str(draw.choice((30, 45, 60))),
+            *_pairs(
+                ("--rand.iterations", draw.randint(30, 80)),
+                ("--rand.min-distance", draw.choice((60, 100, 150))),
+                ("--rand.max-distance", draw.choice((200, 300, 400))),
+                ("--rand.min-angle", draw.choice((30, 45, 60))),
+            ),
         )
     lanes = ("-L", str(draw.randint(1, 3)), *(("--random-lanenumber",) if draw.random() < 0.4 else ()))
     width = ("--default.lanewidth", str(draw.choice((2.8, 3.0, 3.2, 3.5, 3.75))))
