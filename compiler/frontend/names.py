@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.sentences import sentences
+from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
@@ -183,6 +183,7 @@ def _others(text: str) -> list[tuple[str, str]]:
     """The other road users in the first impact, as (kind, words first said), in the order it names them."""
     sents = sentences(text)
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
+    impacts = [i for i in impacts if i >= narrative_start(sents)] or impacts  # (not a filing's note)
     summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
     for i in impacts + summaries:
         # "After the pedestrians had crossed, an SUV ... made contact": an opening clause sets the scene
