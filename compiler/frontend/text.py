@@ -15,7 +15,7 @@ from sovarc.compiler.frontend.words import number
 
 # V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
-    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
+    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])(?!\.\d)|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
     r"(?![\w-]))",
     re.IGNORECASE,
 )

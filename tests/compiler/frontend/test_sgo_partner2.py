@@ -57,3 +57,61 @@ def test_a_note_that_says_the_report_is_unchanged() -> None:
     s = read(note + DAY)
     assert next(p for p in s.participants if p.id == "V2").kind.value == "van"
     assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
+
+
+def kind_of(s: Scenario, pid: str) -> str:
+    p = next(p for p in s.participants if p.id == pid)
+    return str(p.kind.value) if not isinstance(p.kind, Unknown) else "unknown"
+
+
+def test_a_version_number_is_no_label() -> None:
+    """ "(V1.0)" after a shuttle's model is its version: the report still numbers nobody, so the rule does."""
+    s = read(
+        "A Harbor Mobility electric Tern shuttle (V2.1), running an autonomy kit, was driving in autonomous mode "
+        "along a campus road. A pickup truck backed out of a driveway and struck the left side of the Tern."
+    )
+    assert {p.id for p in s.participants} == {"V1", "V2"}
+    assert kind_of(s, "V2") == "pickup"
+    assert actions(s, "V2")[-1].kind is ActionKind.REVERSE
+    assert s.crash.striker == "V2" and s.crash.victim == "V1"
+
+
+def test_a_shuttle_said_again_as_the_shuttle() -> None:
+    s = read(
+        "A Pelican Transit shuttle operated by Acme was driving on [XXX] under autonomous control. The shuttle "
+        "slowed behind a parked van. The shuttle then steered left, striking a parked sedan on the other side of "
+        "[XXX]."
+    )
+    assert s.crash.striker == "V1"
+    assert kind_of(s, "V2") == "car"
+    assert actions(s, "V2")[-1].kind is ActionKind.PARKED
+
+
+def test_the_shuttle_is_not_another_shuttle() -> None:
+    """A report that brings in a second shuttle leaves "the shuttle" unresolved: it may be either."""
+    s = read(
+        "A Pelican Transit shuttle operated by Acme was driving on [XXX] under autonomous control. A second "
+        "shuttle was parked at the stop. The shuttle then struck a parked sedan."
+    )
+    assert "V2" not in {p.id for p in s.participants} or kind_of(s, "V2") != "car"
+
+
+def test_a_shuttle_named_by_its_fleet_number() -> None:
+    s = read(
+        "An autonomous shuttle (Q207) was stopped at the transit stop on [XXX] while riders boarded. A city bus "
+        "pulled in behind Q207 and then changed lanes to the left. Q207 began moving again, and the bus moved back "
+        "into the transit lane and struck the left front side of Q207."
+    )
+    assert s.crash.striker == "V2" and s.crash.victim == "V1"
+    assert kind_of(s, "V2") == "bus"
+    assert "Q207" not in " ".join(p.id for p in s.participants)
+
+
+def test_nearly_stopped_at_the_impact_is_still_moving() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling north on [XXX]. A sedan pulled out of a parking space "
+        "ahead of the Acme AV, and although the Acme AV was nearly stopped, its front struck the left side of the "
+        "sedan."
+    )
+    assert actions(s, "V1")[-1].kind is ActionKind.FOLLOW_LANE
+    assert s.crash.striker == "V1"
