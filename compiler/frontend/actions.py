@@ -198,7 +198,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
             r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
-            r"|the (?:center|centre|middle) (?:travel )?lane)\b",
+            r"|the (?:center|centre|middle) (?:travel )?lane)\b"
+            # back into a lane it had left ("exited the bus lane ... reentered the bus lane"): not the travel lane,
+            # which is the road one comes back onto from off it
+            r"|\bre-?enter(?:ed|ing|s) (?:the|its) (?!travel\b)(?:[\w/-]+ ){0,2}?lane\b",
             re.I,
         ),
     ),

@@ -115,3 +115,22 @@ def test_nearly_stopped_at_the_impact_is_still_moving() -> None:
     )
     assert actions(s, "V1")[-1].kind is ActionKind.FOLLOW_LANE
     assert s.crash.striker == "V1"
+
+
+def test_back_into_a_lane_it_had_left_is_a_lane_change() -> None:
+    """The side is the one the impact shows (see test_sgo_partner): it met V1's left, so it moved right."""
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling north in the bus lane of [XXX]. A delivery van "
+        "behind the Acme AV left the bus lane for the general travel lane, then re-entered the bus lane and made "
+        "contact with the left side of the Acme AV."
+    )
+    assert s.crash.striker == "V2"
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.RIGHT)
+
+
+def test_back_onto_the_travel_lane_is_still_onto_the_road() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling north on [XXX]. A sedan stopped on the shoulder "
+        "re-entered the travel lane and made contact with the rear of the Acme AV."
+    )
+    assert actions(s, "V2")[-1].kind is ActionKind.DRIVE_INTO
