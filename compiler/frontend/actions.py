@@ -172,7 +172,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.FOLLOW_LANE,
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            r"advanc|go\b|pass|drive|driving)\w*"
+            # ("began to pull out": moving off from where it stood, not "pull over", "pull into a space")
+            r"advanc|go\b|pass|drive|driving|pull(?= out\b(?! of\b| onto\b| into\b)))\w*"
             r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"

@@ -134,3 +134,20 @@ def test_back_onto_the_travel_lane_is_still_onto_the_road() -> None:
         "re-entered the travel lane and made contact with the rear of the Acme AV."
     )
     assert actions(s, "V2")[-1].kind is ActionKind.DRIVE_INTO
+
+
+def test_beginning_to_pull_out_after_a_stop_is_moving_off() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) stopped behind a delivery truck on [XXX]. The Acme AV then went "
+        "around the truck. A sedan stopped at the curb began to pull out and made contact with the rear of the "
+        "Acme AV."
+    )
+    assert [a.kind for a in actions(s, "V2")][-2:] == [ActionKind.STOP, ActionKind.FOLLOW_LANE]
+
+
+def test_pulling_out_of_a_place_or_over_is_no_moving_off() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling north on [XXX]. A sedan began to pull out of a "
+        "parking space and made contact with the right side of the Acme AV."
+    )
+    assert actions(s, "V2")[-1].kind is ActionKind.DRIVE_INTO
