@@ -211,7 +211,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b",
+            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b"
+            # or toward its side from behind it: "began to accelerate toward the right side of V1"
+            r"|\b(?:accelerat|steer|swerv|mov|veer|pull|drove|driv|head)\w* (?:\w+ )?towards? the (?:left|right) side "
+            r"of [VP]\d\b",
             re.I,
         ),
     ),

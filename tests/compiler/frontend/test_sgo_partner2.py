@@ -151,3 +151,19 @@ def test_pulling_out_of_a_place_or_over_is_no_moving_off() -> None:
         "parking space and made contact with the right side of the Acme AV."
     )
     assert actions(s, "V2")[-1].kind is ActionKind.DRIVE_INTO
+
+
+def test_from_behind_toward_the_side_of_another_is_a_move_to_that_side() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was stopped at a red light on [XXX]. The sedan directly behind the "
+        "Acme AV moved toward the left side of the Acme AV and made contact with its rear bumper."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)
+
+
+def test_toward_the_rear_of_another_is_no_sideways_move() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was stopped at a red light on [XXX]. A sedan traveling behind the "
+        "Acme AV accelerated toward the rear of the Acme AV and made contact with its rear bumper."
+    )
+    assert all(a.kind is not ActionKind.CHANGE_LANE for a in actions(s, "V2"))
