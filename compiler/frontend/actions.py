@@ -66,9 +66,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
     (ActionKind.TURN_LEFT, re.compile(_TURN.format("left"), re.I)),
     (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
-    (
+    (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
         ActionKind.CHANGE_LANE,
-        re.compile(r"\b(?:chang|switch)(?:e|ed|es|ing)? lanes?\b|\blane[- ]chang\w*|\bmerg(?:e|ed|es|ing)\b", re.I),
+        re.compile(
+            r"\b(?:chang|switch)(?:es?|ed|ing)? lanes?\b|\blane[- ]chang(?:es?|ing)\b|\bmerg(?:es?|ed|ing)\b", re.I
+        ),
     ),
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,

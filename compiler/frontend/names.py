@@ -169,7 +169,8 @@ def _said_again(text: str, said: str, numbers: list[str]) -> str:
     for number in dict.fromkeys(numbers):
         text = re.sub(r"\b" + number + r"\b", "V1", text)
     head = said.split()[-1].lower() if said.split() else ""
-    if head in _OWN_HEADS and not re.search(r"\b(?:an?|another|one) (?:[\w-]+ ){0,3}?" + head + r"s?\b", text, re.I):
+    # (another of its kind, said with any words before the head: "a pickup truck", "a semi-truck")
+    if head in _OWN_HEADS and not re.search(r"\b(?:an?|another|one) [^.,;]{0,40}?\b" + head + r"s?\b", text, re.I):
         text = re.sub(r"\b[Tt]he " + head + r"\b(?![\w-])(?!'s? (?:[a-z]+ )?(?:driver|operator))", "V1", text)
     return text
 

@@ -167,3 +167,26 @@ def test_toward_the_rear_of_another_is_no_sideways_move() -> None:
         "Acme AV accelerated toward the rear of the Acme AV and made contact with its rear bumper."
     )
     assert all(a.kind is not ActionKind.CHANGE_LANE for a in actions(s, "V2"))
+
+
+def test_the_truck_is_not_the_automated_truck_beside_another_truck() -> None:
+    """With "a semi-truck" brought in, "the truck" may be either: it is not taken for the automated truck."""
+    s = read(
+        "An Acme truck was driving in autonomous mode in the right lane of [XXX]. A semi-truck in the left lane "
+        "changed lanes to the right, and the truck made contact with the left side of the Acme truck."
+    )
+    assert s.crash.victim == "V1" and s.crash.striker != "V1"
+
+
+def test_a_lane_named_before_the_verb_is_no_lane_change_noun() -> None:
+    """ "in the left lane changed lanes to the right": the side is the one after the verb, not the lane's."""
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling in the right lane of [XXX]. A sedan in the left lane "
+        "changed lanes to the right and made contact with the left side of the Acme AV."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.RIGHT)
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was traveling in the right lane of [XXX]. A sedan made a right lane "
+        "change and made contact with the left side of the Acme AV."
+    )
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.RIGHT)
