@@ -190,3 +190,11 @@ def test_a_lane_named_before_the_verb_is_no_lane_change_noun() -> None:
         "change and made contact with the left side of the Acme AV."
     )
     assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE, Side.RIGHT)
+
+
+def test_a_narrative_that_quotes_a_report_has_no_note() -> None:
+    sents = sentences(
+        "According to the police report, the Acme AV was struck by a sedan. On May [XXX], 2024 the Acme AV was "
+        "stopped at a light."
+    )
+    assert narrative_start(sents) == 0
