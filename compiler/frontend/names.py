@@ -52,7 +52,7 @@ _BRAND = re.compile(
 )
 # A shuttle's fleet number said beside it ("the shuttle (P139)", "the second shuttle on the route, P131,"): the
 # operator's name for that one shuttle, a letter or two and its number.
-_FLEET_NUMBER = re.compile(r"\b(?:shuttle|bus)\b[^.,;()]{0,40}?(?:, |\s*\(\s*)([A-Z]{1,2}\d{2,4})\b(?=\s*[,)])")
+_FLEET_NUMBER = re.compile(r"\bshuttle\b[^.,;()]{0,40}?(?:, |\s*\(\s*)([A-Z]{1,2}\d{2,4})\b(?=\s*[,)])")
 # Heads that, with "the", point back to the automated vehicle said with them ("a Navya ARMA shuttle ... the
 # shuttle"), unless the report brings in another of its kind ("a pickup truck"). Not "vehicle" or "car": a
 # narrative calls any road user that.
@@ -166,7 +166,7 @@ def _automated(text: str) -> tuple[str, str] | None:
 def _said_again(text: str, said: str, numbers: list[str]) -> str:
     """The automated vehicle said again by its fleet number (`numbers`, read before it was renamed), or by the
     head noun it was introduced with (see `_FLEET_NUMBER`, `_OWN_HEADS`)."""
-    for number in dict.fromkeys(numbers):
+    for number in dict.fromkeys(numbers) if "shuttle" in said.lower() else ():  # (a bus's may be its route's)
         text = re.sub(r"\b" + number + r"\b", "V1", text)
     head = said.split()[-1].lower() if said.split() else ""
     # (another of its kind, said with any words before the head: "a pickup truck", "a semi-truck")

@@ -198,3 +198,11 @@ def test_a_narrative_that_quotes_a_report_has_no_note() -> None:
         "stopped at a light."
     )
     assert narrative_start(sents) == 0
+
+
+def test_a_bus_route_beside_the_partner_is_no_fleet_number_of_the_automated_vehicle() -> None:
+    s = read(
+        "An Acme Autonomous Vehicle (Acme AV) was stopped at a red light on [XXX]. A city bus, M15, pulled away "
+        "from the stop and made contact with the left side of the Acme AV."
+    )
+    assert s.crash.striker == "V2" and s.crash.victim == "V1"
