@@ -66,9 +66,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
     (ActionKind.TURN_LEFT, re.compile(_TURN.format("left"), re.I)),
     (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
-    (
+    (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
         ActionKind.CHANGE_LANE,
-        re.compile(r"\b(?:chang|switch)(?:e|ed|es|ing)? lanes?\b|\blane[- ]chang\w*|\bmerg(?:e|ed|es|ing)\b", re.I),
+        re.compile(
+            r"\b(?:chang|switch)(?:es?|ed|ing)? lanes?\b|\blane[- ]chang(?:es?|ing)\b|\bmerg(?:es?|ed|ing)\b", re.I
+        ),
     ),
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
         ActionKind.CHANGE_LANE,
@@ -172,7 +174,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.FOLLOW_LANE,
         re.compile(
             r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            r"advanc|go\b|pass|drive|driving)\w*"
+            # ("began to pull out": moving off from where it stood, not "pull over", "pull into a space")
+            r"advanc|go\b|pass|drive|driving|pull(?= out\b(?! of\b| onto\b| into\b)))\w*"
             r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
@@ -198,7 +201,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
             r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
-            r"|the (?:center|centre|middle) (?:travel )?lane)\b",
+            r"|the (?:center|centre|middle) (?:travel )?lane)\b"
+            # back into a lane it had left ("exited the bus lane ... reentered the bus lane"): not the travel lane,
+            # which is the road one comes back onto from off it
+            r"|\bre-?enter(?:ed|ing|s) (?:the|its) (?!travel\b)(?:[\w/-]+ ){0,2}?lane\b",
             re.I,
         ),
     ),
@@ -207,7 +213,10 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b",
+            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b"
+            # or toward its side from behind it: "began to accelerate toward the right side of V1"
+            r"|\b(?:accelerat|steer|swerv|mov|veer|pull|drove|driv|head)\w* (?:\w+ )?towards? the (?:left|right) side "
+            r"of [VP]\d\b",
             re.I,
         ),
     ),

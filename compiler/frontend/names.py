@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.sentences import sentences
+from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
@@ -45,9 +45,18 @@ _AV = re.compile(
 )
 # "A Zoox vehicle in autonomous mode", "an Aurora truck ... in autonomy": a brand's vehicle, when the report
 # says its vehicle drove itself, or was driven in manual mode (a mode only an automated vehicle has).
+# (the maker and the kind may come first: "a Local Motors electric Olli shuttle", the model's name before the noun)
 _BRAND = re.compile(
-    r"\b(?i:an?|the)(?: subject| test)? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) (vehicle|truck|shuttle|car|bus)\b"
+    r"\b(?i:an?|the)(?: subject| test| [\w-]+(?: [\w-]+){0,2}?)?? ([A-Z][\w.-]+(?: [A-Z][\w.-]+)?) "
+    r"(vehicle|truck|shuttle|car|bus)\b"
 )
+# A shuttle's fleet number said beside it ("the shuttle (P139)", "the second shuttle on the route, P131,"): the
+# operator's name for that one shuttle, a letter or two and its number.
+_FLEET_NUMBER = re.compile(r"\bshuttle\b[^.,;()]{0,40}?(?:, |\s*\(\s*)([A-Z]{1,2}\d{2,4})\b(?=\s*[,)])")
+# Heads that, with "the", point back to the automated vehicle said with them ("a Navya ARMA shuttle ... the
+# shuttle"), unless the report brings in another of its kind ("a pickup truck"). Not "vehicle" or "car": a
+# narrative calls any road user that.
+_OWN_HEADS = ("shuttle", "truck", "bus")
 # Nouns a brand qualifies when it is not the vehicle: "the Zoox fleet", "the Waymo operator".
 _BRAND_OF = (
     r"vehicles?|cars?|trucks?|shuttles?|bus(?:es)?|fleet|system|software|drivers?|operators?|employees?|staff|team"
@@ -119,6 +128,7 @@ def _automated(text: str) -> tuple[str, str] | None:
     brand = _BRAND.search(text) if _AUTONOMY.search(text) else None
     if first is None and brand is None:
         return None
+    numbers = [m.group(1) for m in _FLEET_NUMBER.finditer(text)]
     if first is not None:
         said = first.group()
         # "the Waymo AVs lane": a possessive written without its apostrophe
@@ -148,8 +158,21 @@ def _automated(text: str) -> tuple[str, str] | None:
             "V1",
             text,
         )
+    text = _said_again(text, said, numbers)
     text = re.sub(r"\bV1(?:'s)? \(\s*[\"']?V1[\"']?\s*\)", "V1", text)  # 'a Waymo Autonomous Vehicle ("Waymo AV")'
     return text, said
+
+
+def _said_again(text: str, said: str, numbers: list[str]) -> str:
+    """The automated vehicle said again by its fleet number (`numbers`, read before it was renamed), or by the
+    head noun it was introduced with (see `_FLEET_NUMBER`, `_OWN_HEADS`)."""
+    for number in dict.fromkeys(numbers) if "shuttle" in said.lower() else ():  # (a bus's may be its route's)
+        text = re.sub(r"\b" + number + r"\b", "V1", text)
+    head = said.split()[-1].lower() if said.split() else ""
+    # (another of its kind, said with any words before the head: "a pickup truck", "a semi-truck")
+    if head in _OWN_HEADS and not re.search(r"\b(?:an?|another|one) [^.,;]{0,40}?\b" + head + r"s?\b", text, re.I):
+        text = re.sub(r"\b[Tt]he " + head + r"\b(?![\w-])(?!'s? (?:[a-z]+ )?(?:driver|operator))", "V1", text)
+    return text
 
 
 # Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle"; a cyclist is later
@@ -183,6 +206,7 @@ def _others(text: str) -> list[tuple[str, str]]:
     """The other road users in the first impact, as (kind, words first said), in the order it names them."""
     sents = sentences(text)
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
+    impacts = [i for i in impacts if i >= narrative_start(sents)] or impacts  # (not a filing's note)
     summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
     for i in impacts + summaries:
         # "After the pedestrians had crossed, an SUV ... made contact": an opening clause sets the scene

@@ -22,6 +22,8 @@ def spell_out(text: str) -> str:
     """The report with its abbreviations written out, word for word ("N/B" -> "northbound"), so that every reader
     reads one spelling."""
     text = _BOUND_SHORT.sub(lambda m: _POINTS[m.group(1)] + "bound", text)
+    # "an Olli shuttle (V1.0)": a capital V before a dotted number is a version, not a vehicle's label
+    text = re.sub(r"\bV(?=\d+(?:\.\d+)+\b)", "v", text)
     # "a left-hand turn" is a left turn: the hand says the side, as "left" alone does
     text = _HANDED.sub(r"\1", text)
     # "the carriageway": British English for the roadway

@@ -26,7 +26,12 @@ _STILL = r"(?:stationary|stopped|parked|standing still|at a stop|at rest)"
 def still_at_impact(sentence: str, pid: str) -> bool:
     return bool(
         re.search(rf"\b(?:the )?{_STILL} {pid}\b", sentence, re.I)
-        or re.search(rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:\w+ )?{_STILL}\b", sentence, re.I)
+        # (not "was nearly stopped": it was still moving)
+        or re.search(
+            rf"\b{pid} (?:remained|was still|was|sat|had been|stayed) (?:(?!nearly|almost)\w+ )?{_STILL}\b",
+            sentence,
+            re.I,
+        )
     )
 
 

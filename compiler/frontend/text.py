@@ -9,13 +9,13 @@ from dataclasses import dataclass, field
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import THING, parties
-from sovarc.compiler.frontend.sentences import sentences
+from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.compiler.frontend.words import number
 
 # V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
-    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
+    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])(?!\.\d)|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
     r"(?![\w-]))",
     re.IGNORECASE,
 )
@@ -267,6 +267,7 @@ def first_impact(sents: list[str]) -> int:
     """The index of the first sentence that describes an impact (see `_SUMMARY`), or -1. An impact with an
     animal or an object before the parties met is not theirs: the crash is the first between road users."""
     found = [i for i, s in enumerate(sents) if describes_impact(s)]
+    found = [i for i in found if i >= narrative_start(sents)] or found  # (not a filing's note: see there)
     found = [i for i in found if not _thing_only(sents[i])] or found
     described = [i for i in found if not _SUMMARY.search(sents[i]) or _MET.search(sents[i])]
     return (described or found or [-1])[0]
