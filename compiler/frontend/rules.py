@@ -17,6 +17,7 @@ from typing import Any
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at, sides_met
+from sovarc.compiler.frontend.doors import door_met
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
@@ -498,7 +499,7 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
     crash = _backing_leads(people, crash)
     crash = backed_into_follower(crash, _backing(people), named)
-    crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
+    crash = door_met(standing_struck(people, crash, sents[impact] if impact >= 0 else ""), sents, crash_at)
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)
@@ -546,7 +547,6 @@ def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
     crash, with the striker the wrong way round when V2 was the one backing and V1 was not."""
     if crash.type is not CrashType.REAR_END or not isinstance(crash.striker, str) or not isinstance(crash.victim, str):
         return crash
-
     backers = _backing(people)
     if crash.victim in backers and crash.striker not in backers:
         return replace(crash, striker=crash.victim, victim=crash.striker)

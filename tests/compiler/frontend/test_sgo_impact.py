@@ -1,11 +1,12 @@
 """How fleet narratives say the impact (issue 18, sgo6), each on sentences written for these tests: a part
-named in the plural, a contact its subject could not avoid."""
+named in the plural, a contact its subject could not avoid, an opened door, the damage a vehicle took."""
 
 from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import read_sentence
+from sovarc.compiler.frontend.doors import door_met
 from sovarc.dsl.ir import Crash, CrashType, Scenario
 from sovarc.dsl.span import Source
 
@@ -52,3 +53,57 @@ def test_a_narrative_whose_impact_could_not_be_avoided_names_its_striker() -> No
         "cyclist."
     )
     assert (s.crash.striker, s.crash.victim) == ("V1", "V2")
+
+
+@pytest.mark.parametrize(
+    ("sents", "crash"),
+    [
+        # the door's vehicle is the subject, the one passing is met by it: the one passing struck
+        (
+            ["V1 passed V2, which was parked at the curb.", "The rear door of V2 opened and struck the side of V1."],
+            Crash(CrashType.SIDE, "V1", "V2"),
+        ),
+        (
+            ["V1 was stopped when its passenger opened the door.", "V1's rear left door made contact with V2."],
+            Crash(CrashType.SIDE, "V2", "V1"),
+        ),
+        # a door not tied to its vehicle is the door the narrative said was opened
+        (
+            [
+                "V1 drove past V2 as the passengers inside V2 opened the front and rear right side doors.",
+                "The rear right side door made contact with the front right side of V1.",
+            ],
+            Crash(CrashType.SIDE, "V1", "V2"),
+        ),
+    ],
+)
+def test_an_opened_door_is_met_by_the_one_passing(sents: list[str], crash: Crash) -> None:
+    read = read_sentence(sents[-1], "V1")
+    assert door_met(read if read is not None else Crash(), sents, len(sents) - 1) == crash
+
+
+def test_a_door_no_one_opened_is_a_part_struck_as_any_other() -> None:
+    sents = ["The front of V2 struck the left rear door of V1."]
+    assert door_met(Crash(CrashType.SIDE, "V2", "V1"), sents, 0) == Crash(CrashType.SIDE, "V2", "V1")
+    # and the door's vehicle moving into the other names its own door opened nowhere: nothing changes
+    sents = ["V1 turned right and its front struck the door of V2."]
+    assert door_met(Crash(CrashType.SIDE, "V1", "V2"), sents, 0) == Crash(CrashType.SIDE, "V1", "V2")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A Waymo Autonomous Vehicle was stopped at the curb on Elm Street for a passenger drop-off. As a pickup "
+        "truck drove by on the left, the rider opened the rear left door. The Waymo AV's rear left door made "
+        "contact with the right side of the pickup truck.",
+        "A Waymo Autonomous Vehicle was traveling north on Oak Avenue when it approached a passenger car stopped in "
+        "the center of the road. The Waymo AV began to pass the passenger car on the right, and the passengers "
+        "inside the passenger car opened the right side doors. The rear right side door made contact with the "
+        "front left side of the Waymo AV.",
+    ],
+)
+def test_a_narrative_with_a_door_opened_into_a_passing_car(text: str) -> None:
+    s = read(text)
+    door = "V1" if "AV's rear left door" in text else "V2"
+    passing = "V2" if door == "V1" else "V1"
+    assert (s.crash.type, s.crash.striker, s.crash.victim) == (CrashType.SIDE, passing, door)
