@@ -132,6 +132,11 @@ def _kind(part: str) -> CrashType | None:
     return None
 
 
+# For readers of a part said elsewhere (`damage`): the words of a part, and what it says when the victim's.
+PART = _PART
+part_kind = _kind
+
+
 def _names(text: str) -> list[str]:
     return re.findall(r"\b" + _V + r"\b", text)
 
@@ -337,6 +342,9 @@ def _backed(part: CrashType, backing: bool) -> CrashType:
     if not backing or part is CrashType.SIDE:
         return part
     return CrashType.REAR_END if part is CrashType.FRONTAL else CrashType.FRONTAL
+
+
+backed = _backed
 
 
 def _said_part(sentence: str) -> CrashType | None:

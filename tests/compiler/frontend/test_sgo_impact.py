@@ -6,6 +6,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import read_sentence
+from sovarc.compiler.frontend.damage import damaged_part
 from sovarc.compiler.frontend.doors import door_met
 from sovarc.dsl.ir import Crash, CrashType, Scenario
 from sovarc.dsl.span import Source
@@ -107,3 +108,43 @@ def test_a_narrative_with_a_door_opened_into_a_passing_car(text: str) -> None:
     door = "V1" if "AV's rear left door" in text else "V2"
     passing = "V2" if door == "V1" else "V1"
     assert (s.crash.type, s.crash.striker, s.crash.victim) == (CrashType.SIDE, passing, door)
+
+
+@pytest.mark.parametrize(
+    ("said", "backing", "kind"),
+    [
+        ("V1 sustained minor damage to the driver's side rear door.", frozenset(), CrashType.SIDE),
+        ("V1 suffered scratches on its rear bumper.", frozenset(), CrashType.REAR_END),
+        ("The collision caused damage to the left rear of V1.", frozenset(), CrashType.REAR_END),
+        ("There was damage to V1's right side.", frozenset(), CrashType.SIDE),
+        # one backing leads with its rear: into the victim's front is the IR's rear_end
+        ("V1 sustained damage to its front bumper.", frozenset(("V2",)), CrashType.REAR_END),
+    ],
+)
+def test_the_victims_damage_says_where_it_was_met(said: str, backing: frozenset[str], kind: CrashType) -> None:
+    sents = ["V2 moved into V1 in the parking lot.", said, "No one was hurt."]
+    assert damaged_part(Crash(striker="V2", victim="V1"), sents, 0, backing) == (Crash(kind, "V2", "V1"), 1)
+
+
+@pytest.mark.parametrize(
+    ("crash", "said"),
+    [
+        # the striker's damage is not where the victim was met
+        (Crash(striker="V2", victim="V1"), "V2 sustained damage to its front bumper."),
+        # a part the impact sentence named stands
+        (Crash(CrashType.REAR_END, "V2", "V1"), "V1 sustained damage to its left door."),
+        # damage said too far from the impact is about something else
+        (Crash(striker="V2", victim="V1"), "It was towed. The driver left. V1 had damage to its left door."),
+    ],
+)
+def test_other_damage_leaves_the_crash_as_read(crash: Crash, said: str) -> None:
+    sents = ["V2 moved into V1.", *said.split(". ")]
+    assert damaged_part(crash, sents, 0, frozenset()) == (crash, 0)
+
+
+def test_a_narrative_that_says_where_the_damage_was() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was parked in a lot on 2nd Street when a pickup truck reversed into the "
+        "Waymo AV. The Waymo AV sustained minor damage to the right side rear door. There were no injuries."
+    )
+    assert (s.crash.type, s.crash.striker, s.crash.victim) == (CrashType.SIDE, "V2", "V1")
