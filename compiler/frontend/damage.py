@@ -16,13 +16,17 @@ from sovarc.dsl.ir import UNKNOWN, Crash
 
 _TOOK = r"(?:sustained|suffered|received|took|had)"
 _DAMAGE = r"(?:[\w-]+ ){0,2}?(?:damage|scratch(?:es)?|dents?|scuffs?)"
+_HARMED = r"(?:damaged|dented|scratched|scuffed)\b"
 
 
 def _damaged(victim: str) -> re.Pattern[str]:
     return re.compile(
         rf"\b{victim}\b {_TOOK} {_DAMAGE} (?:to|on) (?:the |its |his |her |it's )?(?P<part>{PART})\b"
         rf"|\b{_DAMAGE} (?:to|on) (?:the )?(?P<of>{PART}) of (?:the )?{victim}\b"
-        rf"|\b{_DAMAGE} (?:to|on) {victim}'s (?P<own>{PART})\b",
+        rf"|\b{_DAMAGE} (?:to|on) {victim}'s (?P<own>{PART})\b"
+        # "V1's rear bumper was damaged", "damaging the left door of V1"
+        rf"|\b{victim}'s (?P<was>{PART}) (?:was|were) (?:\w+ )?{_HARMED}"
+        rf"|\b(?:damaging|denting|scratching) (?:the )?(?P<ing>{PART}) of (?:the )?{victim}\b",
         re.I,
     )
 
@@ -37,7 +41,7 @@ def damaged_part(crash: Crash, sents: list[str], at: int, backing: frozenset[str
     pattern = _damaged(victim)
     for i, sentence in enumerate(sents[at : at + 1 + ahead], at):
         if m := pattern.search(sentence):
-            kind = part_kind(m.group("part") or m.group("of") or m.group("own"))
+            kind = part_kind(next(g for g in m.groups() if g))
             if kind is not None:
                 return replace(crash, type=backed(kind, striker in backing)), i
     return crash, at

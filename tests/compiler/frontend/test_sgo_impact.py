@@ -117,6 +117,8 @@ def test_a_narrative_with_a_door_opened_into_a_passing_car(text: str) -> None:
         ("V1 suffered scratches on its rear bumper.", frozenset(), CrashType.REAR_END),
         ("The collision caused damage to the left rear of V1.", frozenset(), CrashType.REAR_END),
         ("There was damage to V1's right side.", frozenset(), CrashType.SIDE),
+        ("V1's rear bumper was slightly damaged.", frozenset(), CrashType.REAR_END),
+        ("It left, damaging the left side of V1.", frozenset(), CrashType.SIDE),
         # one backing leads with its rear: into the victim's front is the IR's rear_end
         ("V1 sustained damage to its front bumper.", frozenset(("V2",)), CrashType.REAR_END),
     ],
