@@ -17,7 +17,9 @@ _DOOR = r"(?:[\w'-]+ ){0,6}?doors?\b"
 # whose the door is: "V2's rear door", "the front passenger door of V2"
 _TIED = re.compile(r"\b(?P<v>" + _V + r")'s " + _DOOR + r"|\bdoors? of (?:the )?(?P<w>" + _V + r")\b", re.I)
 _ANY_DOOR = re.compile(r"\bdoors?\b", re.I)
-_OPENED = re.compile(r"\b(?:opened|opens|opening|swung open|flung open|(?:was|were|been) open)\b", re.I)
+_OPENED = re.compile(
+    r"\b(?:opened|opens|opening|swung open|flung open|(?:was|were|been) open|open (?:[\w-]+ ){0,3}?doors?)\b", re.I
+)
 # "the passengers inside V2 opened the front doors", "V1 rider opened the rear door": who opened it is the
 # last one named before the verb whose object is a door
 _OPENED_DOOR = re.compile(r"\b(?:opened|opens|opening|swung open|flung open)\b (?:the |a |an |its |their )?" + _DOOR)

@@ -68,6 +68,10 @@ def test_a_narrative_whose_impact_could_not_be_avoided_names_its_striker() -> No
             ["V1 was stopped when its passenger opened the door.", "V1's rear left door made contact with V2."],
             Crash(CrashType.SIDE, "V2", "V1"),
         ),
+        (
+            ["V2 was parked at the curb.", "The open driver door of V2 made contact with the right side of V1."],
+            Crash(CrashType.SIDE, "V1", "V2"),
+        ),
         # a door not tied to its vehicle is the door the narrative said was opened
         (
             [
