@@ -16,10 +16,11 @@ from sovarc.compiler.frontend.clauses import is_object
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
+# A part named in the plural is the same part ("the front and rear passenger doors", "its rear wheels").
 _WORD = (
-    r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumper|corner|plane|door|fender|wheel|tire|"
-    r"quarter|panel|drivers?'?s?|passenger'?s?|area|portion|section|part|sensors?|housing|(?:rearview |side )?mirror|"
-    r"cab|hood|grille|headlights?|trunk|tailgate|taillights?|hatch)"
+    r"(?:left|right|center|centre|front|frontal|rear|back|side|end|bumpers?|corners?|plane|doors?|fenders?|wheels?|"
+    r"tires?|quarter|panels?|drivers?'?s?|passenger'?s?|area|portion|section|part|sensors?|housing|"
+    r"(?:rearview |side )?mirrors?|cab|hood|grille|headlights?|trunk|tailgate|taillights?|hatch)"
 )
 _PART = _WORD + r"(?:[- ]" + _WORD + r"){0,3}"
 # A verb of motion into a road user or a part of one is a strike: "reversed at low speed into the rear bumper of
@@ -80,6 +81,14 @@ _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
 # behind": one that meets another it follows meets its rear, whatever part of it the report names ("the bumper").
 _FROM_BEHIND = re.compile(r"\bfrom (?:behind|the rear)\b", re.I)
 _FOLLOWER = r"\b{},? (?:(?:that|which) (?:was|had been) )?(?:\w+ing )?(?:directly |right |immediately )?behind\b"
+# Failing to avoid a contact states it ("was unable to avoid contact with V2", "could not avoid striking V2");
+# only avoiding it denies it, which `text` reads as no impact.
+_NOT_AVOIDED = re.compile(
+    r"\b(?:(?:was|were) unable to|failed to|could not|couldn't|did not|didn't) (?:fully )?avoid "
+    r"(?P<met>(?:making )?contact with|a collision with|colliding with|striking|hitting|impacting)",
+    re.I,
+)
+_MADE = {"striking": "struck", "hitting": "hit", "impacting": "impacted", "colliding with": "collided with"}
 _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 
@@ -87,6 +96,7 @@ _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 _FRONT_PARTS = frozenset(("front", "frontal", "cab", "hood", "grille", "headlight", "headlights"))
 _REAR_PARTS = frozenset(("rear", "back", "trunk", "tailgate", "taillight", "taillights", "hatch"))
 _SIDE_PARTS = frozenset(("side", "door", "panel", "fender", "quarter", "mirror"))
+_SINGULAR = {f"{w}s": w for w in ("bumper", "corner", "door", "fender", "wheel", "tire", "panel", "mirror")}
 
 
 def _kind(part: str) -> CrashType | None:
@@ -99,7 +109,7 @@ def _kind(part: str) -> CrashType | None:
     an end named after a side ("the driver's side rear"). A door or a mirror is the side whatever end it is
     near: neither is at a corner."""
     low = part.lower()
-    words = re.split(r"[- ]", low)
+    words = [_SINGULAR.get(w, w) for w in re.split(r"[- ]", low)]
     said = set(words)
     if said & {"door", "mirror", "rearview"}:
         return CrashType.SIDE
@@ -120,6 +130,11 @@ def _kind(part: str) -> CrashType | None:
     if said <= {"left", "right"}:  # "the front of V2 contacted the left of V1"
         return CrashType.SIDE
     return None
+
+
+# For readers of a part said elsewhere (`damage`): the words of a part, and what it says when the victim's.
+PART = _PART
+part_kind = _kind
 
 
 def _names(text: str) -> list[str]:
@@ -277,6 +292,8 @@ def read_sentence(
     backing at the impact, which lead with their rear (see `_backed`)."""
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
+    # An impact its subject could not avoid is one it made: "V1 ... was unable to avoid contact with V2"
+    sentence = _NOT_AVOIDED.sub(lambda m: _MADE.get(m.group("met").lower(), "made contact with"), sentence)
     # A sentence opening on a pronoun is about the one it carries on with ("V1 stopped. It then proceeded to turn
     # and struck V2"): the pronoun is that participant, the subject of every verb it heads.
     if carry is not None and (opening := re.match(r"(?:It|He|She)\b(?!')", sentence)):
@@ -325,6 +342,9 @@ def _backed(part: CrashType, backing: bool) -> CrashType:
     if not backing or part is CrashType.SIDE:
         return part
     return CrashType.REAR_END if part is CrashType.FRONTAL else CrashType.FRONTAL
+
+
+backed = _backed
 
 
 def _said_part(sentence: str) -> CrashType | None:

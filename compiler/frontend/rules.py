@@ -15,8 +15,11 @@ from dataclasses import replace
 from typing import Any
 
 from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
+from sovarc.compiler.frontend.backing import backing, backing_leads
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at, sides_met
+from sovarc.compiler.frontend.damage import damaged_part
+from sovarc.compiler.frontend.doors import door_met
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
@@ -492,20 +495,22 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
     people = _with_kinds(people, prepared.words, named, spots)
     people = _shared_headings(before, people, spots)
     people = _scene(named, people, parked, spots)
-    if crash_at >= 0 and (backers := _backing(people)):
+    if crash_at >= 0 and (backers := backing(people)):
         # read again knowing who backed: its rear is the end it moved with (see `crash.read_sentence`)
         crash, crash_at = read_crash_at(sents, impact, carry, backers)
     people, crash = wrong_side(people, clauses, crash, kind is RoadKind.STRAIGHT)
-    crash = _backing_leads(people, crash)
-    crash = backed_into_follower(crash, _backing(people), named)
-    crash = standing_struck(people, crash, sents[impact] if impact >= 0 else "")
+    crash = backing_leads(people, crash)
+    crash = backed_into_follower(crash, backing(people), named)
+    crash = door_met(standing_struck(people, crash, sents[impact] if impact >= 0 else ""), sents, crash_at)
+    crash, type_at = damaged_part(crash, sents, crash_at, backing(people))
     environment, found = read_environment(named)
     spots += found
     speed_limit, limit_at = read_speed_limit(named)
     spots += [("road.speed_limit", "sentence", limit_at, 0)] if limit_at >= 0 else []
     spots += [("road.lanes", "named", *lanes_at)] if lanes_at else []
     spots += [("road.kind", "named", *kind_at)] if kind_at else []
-    spots += [(f"crash.{f}", "sentence", crash_at, 0) for f in ("type", "striker", "victim")] if crash_at >= 0 else []
+    said = {"type": type_at, "striker": crash_at, "victim": crash_at}
+    spots += [(f"crash.{f}", "sentence", at, 0) for f, at in said.items() if at >= 0]
     locate = Locator(text, named, sents)
     provenance = Provenance(
         report_path or UNKNOWN,
@@ -533,24 +538,6 @@ def _moved_toward(sentence: str, pid: str, crash: Crash) -> str | None:
     if other in met:
         return "right" if met[other] == "left" else "left"
     return None
-
-
-def _backing(people: list[Participant]) -> frozenset[str]:
-    """The vehicles backing at the impact: their last action is the reverse."""
-    return frozenset(p.id for p in people if p.known_actions and p.known_actions[-1].kind is ActionKind.REVERSE)
-
-
-def _backing_leads(people: list[Participant], crash: Crash) -> Crash:
-    """A vehicle backing into the impact leads with its rear. The crash readers take a front for the striking
-    face, so "the rear of V2 struck the front of V1" reads as V1's front into V2's rear: the faces of a rear-end
-    crash, with the striker the wrong way round when V2 was the one backing and V1 was not."""
-    if crash.type is not CrashType.REAR_END or not isinstance(crash.striker, str) or not isinstance(crash.victim, str):
-        return crash
-
-    backers = _backing(people)
-    if crash.victim in backers and crash.striker not in backers:
-        return replace(crash, striker=crash.victim, victim=crash.striker)
-    return crash
 
 
 def _with_kinds(people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]) -> list[Participant]:
