@@ -79,7 +79,7 @@ def missing(road_map: RoadMap, kind: RoadKind | str, *, min_length: float = DEFA
     if found.counts[wanted]:
         return None
     message = f"{road_map.name} has no {KIND_NAMES[wanted][0].split(' ', 1)[1]}: it has {have(found.counts)}"
-    if found.short:
+    if wanted is RoadKind.STRAIGHT and found.short:
         message += f"; {len(found.short)} {SHORT_NAME.format(min_length)}"
     return message + ramps(road_map, wanted)
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from sovarc.compiler.maps import RoadMap, find_sites, match_sites, short_sites
 from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, SHORT_MIN_LENGTH
-from sovarc.compiler.maps.survey import survey
+from sovarc.compiler.maps.survey import missing, survey
 from sovarc.compiler.pipeline import Options, stage_sites
 from sovarc.dsl import parse
 from sovarc.dsl.ir import RoadKind
@@ -85,6 +85,8 @@ def test_a_street_of_short_blocks_gives_short_sites_above_the_floor(tmp_path: Pa
     text = survey(road_map).text()
     assert text.splitlines()[0].endswith(", 0 straight roads")
     assert f"straight roads shorter than 80 m, tried last ({len(short)}):" in text
+    said = f"0 straight roads; {len(short)} straight roads shorter than 80 m, tried last"
+    assert str(missing(road_map, S)).endswith(said)  # `sovarc sites --kind straight` says why it has none
 
 
 def test_a_straight_crash_plans_on_a_street_of_short_blocks(tmp_path: Path) -> None:
