@@ -24,7 +24,9 @@ def add_sites_parser(sub: Any, summary: str, formatter: Any) -> None:
         description=(
             "List the sites the compiler finds in a map, per road kind: each site's id, where it is, and per\n"
             "arm its heading, its lanes each way and their widths. With --png, draw the map with the sites\n"
-            "marked (intersections red, T-junctions blue, straight roads green). A kind the map lacks is said,\n"
+            "marked (intersections red, T-junctions blue, straight roads green). Straight stretches shorter than\n"
+            "--min-length (a city block between junctions) are listed last, under their own heading, and drawn\n"
+            "dashed: the site search tries them only after every other fitting site. A kind the map lacks is said,\n"
             "with how many sites of each kind it has.\n\n"
             "examples:\n"
             "  sovarc sites examples/maps/town.net.xml\n"
@@ -40,7 +42,7 @@ def add_sites_parser(sub: Any, summary: str, formatter: Any) -> None:
         type=float,
         default=DEFAULT_MIN_LENGTH,
         metavar="M",
-        help=f"the shortest straight site, in metres (default {DEFAULT_MIN_LENGTH:g})",
+        help=f"the shortest straight site tried before short ones, in metres (default {DEFAULT_MIN_LENGTH:g})",
     )
 
 
@@ -49,7 +51,7 @@ def cmd_sites(args: argparse.Namespace) -> int:
     found = survey(road_map, args.kind, min_length=args.min_length)
     print(found.text(), end="")
     if args.png:
-        draw(road_map, found.sites, args.png)
+        draw(road_map, found.sites, args.png, found.short)
         print(f"drawn to {args.png}", file=sys.stderr)
     lacking = missing(road_map, args.kind, min_length=args.min_length) if args.kind else None
     if lacking:

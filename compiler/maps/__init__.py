@@ -3,6 +3,7 @@
 road_map = load_map("town.net.xml")              # or an OpenDRIVE .xodr, through netconvert
 network = with_opendrive(road_map.network)   # the map in both formats, as plans carry it
 sites = find_sites(road_map, RoadKind.T_JUNCTION)
+last = short_sites(road_map)                     # straight stretches of a city block, tried last
 matches = match_sites(scenario, road_map, n=3, seed=0)
 """
 
@@ -19,7 +20,7 @@ from sovarc.compiler.maps.search import (
     pick_diverse,
     site_rotations,
 )
-from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites
+from sovarc.compiler.maps.sites import Arm, Connection, LaneInfo, Site, find_sites, short_sites
 
 __all__ = [
     "Arm",
@@ -41,6 +42,7 @@ __all__ = [
     "pick_diverse",
     "planning_map",
     "scenario_needs",
+    "short_sites",
     "site_rotations",
     "with_opendrive",
 ]

@@ -15,6 +15,11 @@ report's `road.lanes` (both directions together) is not a filter of its own.
 Clamping (only with `clamp=True`): a site that has every arm and connection but too few
 lanes also fits; the lane numbers are clamped to the site's lanes and each clamp is written
 as a note in `SiteMatch.clamped`. Exact fits are always chosen before clamped ones.
+
+Short straight sites (`sites.short_sites`: a block of 26-80 m between junctions) are of last resort:
+tried only after every exact fit on a site of 80 m or more (an exact fit on one before a clamped fit
+on a long site, a clamped fit on one after), so that a map with enough long sites that fit is staged
+exactly as without them.
 """
 
 from __future__ import annotations
@@ -28,7 +33,7 @@ from sovarc.compiler.crashes import CRASH_ANGLES
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.needs import HEADING_DEGREES, JUNCTION_MOVES, Need, scenario_needs
-from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites
+from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites, short_sites
 from sovarc.compiler.maps.survey import ramps
 from sovarc.dsl.errors import Diagnostic, LoweringError
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, RoadKind, Scenario
@@ -86,7 +91,8 @@ def match_sites(
     """Up to `n` distinct fitting sites, chosen to differ in lane width, length and lane count.
 
     The same scenario, map and seed give the same sites in the same order. Fewer than `n`
-    come back when fewer fit; none fitting is a LoweringError saying what was needed.
+    come back when fewer fit; none fitting is a LoweringError saying what was needed. The short
+    straight sites follow every exact fit on a long one, chosen among themselves the same way.
     """
     if n < 1:
         raise ValueError(f"n must be at least 1, not {n}")
@@ -94,11 +100,35 @@ def match_sites(
     needs = scenario_needs(scenario)
     sites = find_sites(road_map, kind, min_length=min_length)
     matches = [m for site in sites if (m := match_site(site, needs, clamp=clamp)) is not None]
-    if not matches:
+    chosen = _ranked(matches, n, seed, needs, scenario.crash.type is CrashType.FRONTAL)
+    if len(chosen) < n or not all(m.exact for m in chosen):
+        chosen = _with_short(chosen, n, seed, needs, short_sites(road_map, kind, min_length=min_length), clamp)
+    if not chosen:
         could_clamp = not clamp and any(match_site(site, needs, clamp=True) for site in sites)
         every_site = find_sites(road_map, min_length=min_length)
         raise LoweringError(_no_fit(scenario, needs, road_map, every_site, could_clamp))
-    if scenario.crash.type is CrashType.FRONTAL:
+    return chosen
+
+
+def _with_short(
+    chosen: list[SiteMatch], n: int, seed: int, needs: tuple[Need, ...], short: list[Site], clamp: bool
+) -> list[SiteMatch]:
+    """The long sites' picks with the short straight sites (a city block) after every exact fit on a
+    long one: a map with enough long sites is staged as without them, and one of short blocks still
+    hosts what fits in them. An exact fit on a short site goes before a clamped one on a long site: it
+    keeps the lanes the record states, which clamping changes."""
+    found = [m for site in short if (m := match_site(site, needs, clamp=clamp)) is not None]
+    if not found:
+        return chosen  # as picked, in the order the picking gave (oblique frontal sites first)
+    exact = [m for m in chosen if m.exact]
+    last = pick_diverse(found, n - len(exact), seed)  # exact fits first, as among the long sites
+    clamped = [m for m in chosen if not m.exact]
+    return (exact + [m for m in last if m.exact] + clamped + [m for m in last if not m.exact])[:n]
+
+
+def _ranked(matches: list[SiteMatch], n: int, seed: int, needs: tuple[Need, ...], frontal: bool) -> list[SiteMatch]:
+    """Up to `n` of the matches, in the order they are tried (`pick_diverse`)."""
+    if frontal:
         # a frontal crash between two cars crossing straight over needs their arms oblique: sites
         # where they are come first, so a right-angled grid's crossings do not use up the spares
         oblique = [m for m in matches if _oblique(m, needs)]

@@ -40,12 +40,22 @@ from sovarc.compiler.maps.roads import CAR, LaneInfo, NodeArm, RoadNet, axis
 from sovarc.compiler.maps.site import Arm, Connection, Site
 from sovarc.compiler.maps.straights import MEDIAN_MAX as MEDIAN_MAX  # lowering's median rule
 from sovarc.compiler.maps.straights import straight_sites
+from sovarc.compiler.vehicles import CAR_MODEL
 from sovarc.dsl.ir import RoadKind
 
 if TYPE_CHECKING:
     from sovarc.compiler.maps.load import RoadMap
 
-DEFAULT_MIN_LENGTH = 80.0  # m; a straight site must be at least this long
+# m: a straight site is at least this long; a shorter stretch (a city block) is a site of last resort
+DEFAULT_MIN_LENGTH = 80.0
+# The shortest straight stretch kept at all (`short_sites`): a straight crash puts two cars on the
+# road, one closing on the other, and a driver follows another at the two-second gap at the least a
+# town's streets are driven at, 30 km/h: two car bodies and that gap, 2 x 4.6 + 16.7 = 26 m. On less,
+# no two cars are in traffic one behind the other, nor meet head on (the same gap closed from both
+# ends); a city block of 50-70 m between junctions leaves more once the junctions are taken off.
+FOLLOWING_GAP = 2.0  # s: the two-second rule of driving manuals
+SLOWEST_STREET = 30.0 / 3.6  # m/s: the lowest urban speed limit (30 km/h zones)
+SHORT_MIN_LENGTH = round(2 * CAR_MODEL.body.length + FOLLOWING_GAP * SLOWEST_STREET, 1)  # m
 CROSS_TOLERANCE = 35.0  # degrees an intersection's or T's arm may stray from its place in the cross
 # ... and where every arm is a two-way road: two roads crossing at 50 degrees or more are still a
 # crossing a person sees (a ring road crossing the spokes of a town's radial streets meets them at
@@ -65,8 +75,22 @@ def find_sites(
     if sites is None:
         roads = road_net(road_map)
         junctions, road_map.cache["merges"] = _junction_sites(roads)
-        found = junctions + straight_sites(roads, min_length, _open_edges(road_map))
-        sites = road_map.cache[min_length] = tuple(sorted(found, key=lambda s: s.id))
+        straights, short = straight_sites(roads, min_length, _open_edges(road_map), floor=SHORT_MIN_LENGTH)
+        sites = road_map.cache[min_length] = tuple(sorted(junctions + straights, key=lambda s: s.id))
+        road_map.cache["short", min_length] = tuple(sorted(short, key=lambda s: s.id))
+    return _of_kind(sites, kind)
+
+
+def short_sites(
+    road_map: RoadMap, kind: RoadKind | str | None = None, *, min_length: float = DEFAULT_MIN_LENGTH
+) -> list[Site]:
+    """The straight sites of last resort, sorted by id: stretches of a road between junctions shorter
+    than `min_length` and at least SHORT_MIN_LENGTH long (a city block), which `find_sites` leaves out."""
+    find_sites(road_map, min_length=min_length)
+    return _of_kind(road_map.cache["short", min_length], kind)
+
+
+def _of_kind(sites: tuple[Site, ...], kind: RoadKind | str | None) -> list[Site]:
     wanted = RoadKind(kind) if kind is not None else None
     return [s for s in sites if wanted is None or s.kind is wanted]
 

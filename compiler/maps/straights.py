@@ -7,6 +7,11 @@ keeps both of these and turns little: its direction of travel spreads over no mo
 length allows at STRAIGHT_RADIUS, and never more than STRAIGHT_TURN. A long stretch is cut
 into several sites of at most SITE_MAX metres.
 
+The walk cuts a road into stretches by the rule for `min_length` (the turn a stretch may take grows
+with it); those that come out shorter than `min_length` but at least `floor` long are kept apart, as
+short sites (a city block of 50-70 m between junctions): the site search tries them last (search.py),
+so the long sites and every choice among them are as they were without them.
+
 A median the map describes as flat, open ground (medians.py) does not divide a road: where the
 edges on both sides are of roads with one, the directions up to OPEN_MEDIAN_MAX apart are one
 two-way road, and the site records how wide its median is (`Site.median`) for lowering to cross.
@@ -42,9 +47,15 @@ MEDIAN_MAX = 1.0  # m
 OPEN_MEDIAN_MAX = 10.0  # m
 
 
-def straight_sites(roads: RoadNet, min_length: float, open_edges: frozenset[str] = frozenset()) -> list[Site]:
-    """`open_edges`: the edges whose road has a median a car can drive across (medians.py)."""
-    sites = []
+def straight_sites(
+    roads: RoadNet, min_length: float, open_edges: frozenset[str] = frozenset(), *, floor: float | None = None
+) -> tuple[list[Site], list[Site]]:
+    """The straight sites at least `min_length` long, and the short ones: the stretches the same walk
+    found shorter than that but at least `floor` long (none when `floor` is None).
+    `open_edges`: the edges whose road has a median a car can drive across (medians.py)."""
+    shortest = min_length if floor is None else min(floor, min_length)
+    sites: list[Site] = []
+    short: list[Site] = []
     done: set[str] = set()
     for edge in sorted((e for e in roads.net.getEdges() if is_road(e)), key=lambda e: e.getID()):
         if edge.getID() in done or not roads.lanes(edge):
@@ -52,7 +63,7 @@ def straight_sites(roads: RoadNet, min_length: float, open_edges: frozenset[str]
         chain = roads.chain(edge, through=True)
         done.update(e.getID() for e in chain)
         road = _Road(roads, chain, open_edges)
-        for lo, hi, two_way, median in road.stretches(min_length):
+        for lo, hi, two_way, median in road.stretches(min_length, shortest):
             if two_way and road.partner is not None and road.partner.first < road.first:
                 continue  # the partner's walk stages the two-way stretch (it sees the same one)
             count = max(1, int((hi - lo) // max(SITE_MAX, min_length)))
@@ -63,8 +74,12 @@ def straight_sites(roads: RoadNet, min_length: float, open_edges: frozenset[str]
                     continue
                 if not two_way and len(directions[0][1]) < 2:
                     continue  # a one-way single lane is not a road to stage a crash on
-                sites.append(_site(directions, median))
-    return sites
+                site = _site(directions, median)
+                if hi - lo >= min_length:
+                    sites.append(site)
+                elif site.min_length >= shortest:  # both directions hold a short site's length, not one alone
+                    short.append(site)
+    return sites, short
 
 
 def _site(directions: list[tuple[str, tuple[LaneInfo, ...]]], median: float) -> Site:
@@ -163,11 +178,11 @@ class _Road:
         ]
         self.partner = _Direction(roads, roads.chain(backs[0], through=True), open_edges) if backs else None
 
-    def stretches(self, min_length: float) -> list[tuple[float, float, bool, float]]:
-        """Straight stretches at least `min_length` long: (from, to, two-way, the widest open median
-        between the directions, 0 for none), in arc length along `own`."""
+    def stretches(self, min_length: float, floor: float) -> list[tuple[float, float, bool, float]]:
+        """Straight stretches, cut by the rule for `min_length` and at least `floor` long: (from, to,
+        two-way, the widest open median between the directions, 0 for none), in arc length along `own`."""
         own = self.own
-        if own.length < min_length:
+        if own.length < floor:
             return []
         s = np.linspace(0.0, own.length, max(2, int(own.length / STEP) + 1))
         points = own.sample(s)
@@ -204,7 +219,7 @@ class _Road:
                     break
                 lo_turn, hi_turn = lo2, hi2
                 end += 1
-            if s[end] - s[start] >= min_length and keys[start] >= 0:
+            if s[end] - s[start] >= floor and keys[start] >= 0:
                 median = round(float(medians[start : end + 1].max()), 1)
                 found_stretches.append((float(s[start]), float(s[end]), bool(keys[start] % 100 > 0), median))
             start = end

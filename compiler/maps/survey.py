@@ -1,8 +1,8 @@
 """What the compiler sees in a map, shown to its user: the sites per kind, listed and drawn.
 
 report = survey(road_map)                 # every site, per kind
-print(report.text())                      # one line per site: arms, lanes, widths
-draw(road_map, report.sites, "map.png")   # the map with its sites marked
+print(report.text())                      # one line per site: arms, lanes, widths; short straight ones last
+draw(road_map, report.sites, "map.png", report.short)   # the map with its sites marked
 missing(road_map, RoadKind.INTERSECTION)  # why a scenario of that kind finds no site, or None
 """
 
@@ -15,7 +15,7 @@ from pathlib import Path
 
 from sovarc.compiler.maps.load import RoadMap
 from sovarc.compiler.maps.roads import is_road
-from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites, merges
+from sovarc.compiler.maps.sites import DEFAULT_MIN_LENGTH, Arm, Site, find_sites, merges, short_sites
 from sovarc.dsl.ir import RoadKind
 
 KIND_NAMES: dict[RoadKind, tuple[str, str]] = {
@@ -33,6 +33,8 @@ class Survey:
     map_name: str
     sites: tuple[Site, ...]
     counts: dict[RoadKind, int]  # every kind, whatever was asked
+    short: tuple[Site, ...] = ()  # the straight sites of last resort (`short_sites`), when straight roads are asked
+    min_length: float = DEFAULT_MIN_LENGTH
 
     def text(self) -> str:
         lines = [f"{self.map_name}: {have(self.counts)}"]
@@ -42,7 +44,14 @@ class Survey:
                 continue
             lines.append(f"{KIND_NAMES[kind][1]} ({len(chosen)}):")
             lines += ["  " + describe(site) for site in chosen]
+        if self.short:
+            lines.append(f"{SHORT_NAME.format(self.min_length)} ({len(self.short)}):")
+            lines += ["  " + describe(site) for site in self.short]
         return "\n".join(lines) + "\n"
+
+
+# the heading the short straight sites are listed under, after every other site, as the search tries them
+SHORT_NAME = "straight roads shorter than {:g} m, tried last"
 
 
 def survey(road_map: RoadMap, kind: RoadKind | str | None = None, *, min_length: float = DEFAULT_MIN_LENGTH) -> Survey:
@@ -53,6 +62,8 @@ def survey(road_map: RoadMap, kind: RoadKind | str | None = None, *, min_length:
         road_map.name,
         tuple(s for s in every if wanted is None or s.kind is wanted),
         {k: counts[k] for k in RoadKind},
+        tuple(short_sites(road_map, wanted, min_length=min_length)),
+        min_length,
     )
 
 
@@ -68,6 +79,8 @@ def missing(road_map: RoadMap, kind: RoadKind | str, *, min_length: float = DEFA
     if found.counts[wanted]:
         return None
     message = f"{road_map.name} has no {KIND_NAMES[wanted][0].split(' ', 1)[1]}: it has {have(found.counts)}"
+    if wanted is RoadKind.STRAIGHT and found.short:
+        message += f"; {len(found.short)} {SHORT_NAME.format(min_length)}"
     return message + ramps(road_map, wanted)
 
 
@@ -99,8 +112,14 @@ def _arm(arm: Arm) -> str:
     )
 
 
-def draw(road_map: RoadMap, sites: tuple[Site, ...] | list[Site], path: str | os.PathLike[str]) -> Path:
-    """The map's car lanes in grey and every site marked in its kind's colour, as a PNG at `path`."""
+def draw(
+    road_map: RoadMap,
+    sites: tuple[Site, ...] | list[Site],
+    path: str | os.PathLike[str],
+    short: tuple[Site, ...] | list[Site] = (),
+) -> Path:
+    """The map's car lanes in grey and every site marked in its kind's colour, as a PNG at `path`; the
+    short straight sites (`short_sites`), if given, dashed."""
     # matplotlib is heavy and only this picture needs it: imported here, not when the compiler loads.
     import matplotlib
 
@@ -119,6 +138,11 @@ def draw(road_map: RoadMap, sites: tuple[Site, ...] | list[Site], path: str | os
             for lane in arm.incoming + arm.outgoing:
                 xs, ys = zip(*lane.shape, strict=True)
                 axes.plot(xs, ys, color=colour, linewidth=1.4, alpha=0.8)
+    for site in short:
+        for arm in site.arms:
+            for lane in arm.incoming + arm.outgoing:
+                xs, ys = zip(*lane.shape, strict=True)
+                axes.plot(xs, ys, color=COLOURS[RoadKind.STRAIGHT], linewidth=1.0, alpha=0.8, linestyle="--")
         if site.kind is not RoadKind.STRAIGHT:
             axes.plot(*site.centre, "o", color=colour, markersize=6)
         axes.annotate(site.id.split(":", 1)[1][:18], site.centre, fontsize=5, color=colour)
@@ -126,6 +150,8 @@ def draw(road_map: RoadMap, sites: tuple[Site, ...] | list[Site], path: str | os
     axes.set_title(f"{road_map.name}: " + have({k: counts[k] for k in RoadKind}))
     for kind, colour in COLOURS.items():
         axes.plot([], [], color=colour, label=KIND_NAMES[kind][1])
+    if short:
+        axes.plot([], [], color=COLOURS[RoadKind.STRAIGHT], linestyle="--", label="shorter straight roads, tried last")
     axes.legend(loc="upper right")
     axes.set_aspect("equal")
     out = Path(path)
