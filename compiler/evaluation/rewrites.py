@@ -17,6 +17,7 @@ import re
 from collections.abc import Callable
 
 from sovarc.compiler.evaluation import rewrite_clauses as clauses
+from sovarc.compiler.evaluation import rewrite_road as road
 from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
 
@@ -528,6 +529,11 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "vehicle_ordinal": clauses.vehicle_ordinal,
     "police_abbrev": clauses.police_abbrev,
     "lane_curb": clauses.lane_curb,
+    # how the road and its conditions are said (`rewrite_road`)
+    "limit_posted_at": road.limit_posted_at,
+    "lanes_each_way": road.lanes_each_way,
+    "lanes_total": road.lanes_total,
+    "dark_lighted": road.dark_lighted,
 }
 
 

@@ -35,6 +35,9 @@ UNCHANGED = [
     ("struck_in_side", "V1 struck the rear of V2, a parked car."),
     ("stationary", "V1 was stopped by the police."),
     ("lane_curb", "V1 crossed the right lane line."),
+    # a limit not followed by its speed; an odd count of lanes (a centre turn lane) is no count in each direction
+    ("limit_posted_at", "The roadway had a posted speed limit of unknown value."),
+    ("lanes_each_way", "a three-lane, two-way roadway"),
 ]
 
 

@@ -210,6 +210,24 @@ CASES = [
         "V1 was a 1996 Honda Civic, which was traveling east in the curb lane. After V2, a 1998 Ford, stopped, "
         "the Ford turned left.",
     ),
+    # how the road and its conditions are said (`rewrite_road.py`)
+    (
+        "limit_posted_at",
+        "The road had a posted speed limit of 48 kmph (30 mph). The posted speed limit was 35 MPH.",
+        "The road was posted at 48 kmph (30 mph). The speed limit was posted at 35 MPH.",
+    ),
+    (
+        "lanes_each_way",
+        "a two-lane, two-way roadway and a four lane undivided road",
+        "a two-way roadway with one lane in each direction and an undivided road with two lanes in each direction",
+    ),
+    (
+        "lanes_total",
+        "a two-way roadway with one lane in each direction and a divided road with two lanes of travel in each "
+        "direction",
+        "a two-lane, two-way roadway and a four-lane, divided road",
+    ),
+    ("dark_lighted", "It was dark, but lighted.", "It was dark-lighted."),
 ]
 
 
