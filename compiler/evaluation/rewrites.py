@@ -16,48 +16,10 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from sovarc.compiler.evaluation import rewrite_clauses as clauses
+from sovarc.compiler.evaluation import rewrite_road as road
+from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
-
-_WORDS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
-_ORDINALS = ("zeroth", "first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth")
-_DIGIT_OF = {w: i for i, w in enumerate(_WORDS)}
-_DIGIT_OF.update({o: i for i, o in enumerate(_ORDINALS)})
-
-
-def _digit(word: str) -> int:
-    return int(word) if word.isdigit() else _DIGIT_OF[word.lower()]
-
-
-# ---- participant naming -----------------------------------------------------------------------------------
-# Every way the reports number a vehicle: V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, Vehicle one,
-# Vehicle No. 1, Unit 1, Unit #1.
-_VEHICLE = re.compile(
-    r"\bV(?:-| )?(?P<v>\d)\b(?![\w-])"
-    r"|\b(?i:vehicle)\s*(?:#\s*|(?i:no\.)\s*|(?i:number)\s+)?(?P<w>\d|(?i:one|two|three|four|five|six))\b(?![\w-])"
-    r"|\b(?i:unit)\s*#?\s*(?P<u>\d)\b(?![\w-])"
-)
-
-
-def _through_v(rewrite: Callable[[str], str]) -> Callable[[str], str]:
-    """A rewrite written for "V1" names, for a report naming its vehicles any way: the names are read as V1, V2,
-    ... and each is given back its own words afterwards (the rewrites keep the names' order)."""
-
-    def run(text: str) -> str:
-        said = [m.group() for m in _VEHICLE.finditer(text)]
-        out = rewrite(_renamed(lambda n: f"V{n}")(text))
-        names = iter(said)
-        restored = re.sub(r"\bV\d\b", lambda m: next(names, m.group()), out)
-        return restored if len(re.findall(r"\bV\d\b", out)) == len(said) else out
-
-    return run
-
-
-def _renamed(form: Callable[[int], str]) -> Callable[[str], str]:
-    def rewrite(text: str) -> str:
-        return _VEHICLE.sub(lambda m: form(_digit(m.group("v") or m.group("w") or m.group("u"))), text)
-
-    return rewrite
-
 
 # "V1's front" -> "the front of V1": the possessive and the of-phrase name the same part.
 _PARTS = (
@@ -140,9 +102,9 @@ _LANE_ORDINAL = re.compile(
 
 def _lane_number(form: Callable[[int], str]) -> Callable[[str], str]:
     def rewrite(text: str) -> str:
-        text = _LANE_NUMBER.sub(lambda m: f"{m.group('lane')} {form(_digit(m.group('n')))}", text)
+        text = _LANE_NUMBER.sub(lambda m: f"{m.group('lane')} {form(digit(m.group('n')))}", text)
         return _LANE_ORDINAL.sub(
-            lambda m: f"{'L' if m.group('the') == 'The' else 'l'}ane {form(_digit(m.group('n')))}", text
+            lambda m: f"{'L' if m.group('the') == 'The' else 'l'}ane {form(digit(m.group('n')))}", text
         )
 
     return rewrite
@@ -158,7 +120,7 @@ _LANE_AFTER = re.compile(
 
 def lane_ordinal(text: str) -> str:
     """ "in lane one" / "into lane #2" -> "in the first lane" / "into the second lane"."""
-    return _LANE_AFTER.sub(lambda m: f"{m.group('prep')} the {_ORDINALS[_digit(m.group('n'))]} lane", text)
+    return _LANE_AFTER.sub(lambda m: f"{m.group('prep')} the {ORDINALS[digit(m.group('n'))]} lane", text)
 
 
 # ---- counts -----------------------------------------------------------------------------------------------
@@ -170,12 +132,12 @@ _COUNT_DIGIT = re.compile(r"\b(?P<n>[2-8])(?P<rest>[- ]lanes?|-way)\b")
 
 def count_digits(text: str) -> str:
     """ "a two-lane road", "three lanes", "a four-way stop" -> "a 2-lane road", "3 lanes", "a 4-way stop"."""
-    return _COUNT_WORD.sub(lambda m: f"{_digit(m.group('n'))}{m.group('rest')}", text)
+    return _COUNT_WORD.sub(lambda m: f"{digit(m.group('n'))}{m.group('rest')}", text)
 
 
 def count_words(text: str) -> str:
     """ "a 2-lane road", "3 lanes" -> "a two-lane road", "three lanes"."""
-    return _COUNT_DIGIT.sub(lambda m: f"{_WORDS[int(m.group('n'))]}{m.group('rest')}", text)
+    return _COUNT_DIGIT.sub(lambda m: f"{WORDS[int(m.group('n'))]}{m.group('rest')}", text)
 
 
 # ---- who is the subject: the vehicle or its driver ----------------------------------------------------------
@@ -404,11 +366,7 @@ def intending_on(text: str) -> str:
 
 
 # an impact said actively between two named sides: "the front of V1 struck the rear of V2"
-_ANY_NAME = (
-    r"(?:V(?:-| )?\d|(?i:vehicle)\s*(?:#\s*|(?i:no\.)\s*|(?i:number)\s+)?(?:\d|(?i:one|two|three|four|five|six))"
-    r"|(?i:unit)\s*#?\s*\d)(?![\w-])"
-)
-_SIDE_OF = r"(?:[Tt]he (?:[\w-]+ ){1,3}?of )?" + _ANY_NAME
+_SIDE_OF = r"(?:[Tt]he (?:[\w-]+ ){1,3}?of )?" + ANY_NAME
 _ACTIVE = re.compile(r"(?P<a>" + _SIDE_OF + r") (?P<verb>struck|impacted|hit|contacted) (?P<b>" + _SIDE_OF + r")\b")
 
 
@@ -437,9 +395,9 @@ def compass_was(text: str) -> str:
 
 def driver_number(text: str) -> str:
     """ "the driver of V1 stopped" -> "Driver #1 stopped": police forms number the drivers as the vehicles."""
-    v = _renamed(lambda n: f"V{n}")
+    v = renamed(lambda n: f"V{n}")
     return re.sub(
-        r"\b[Tt]he (?:driver|operator) of (" + _ANY_NAME + r") (then )?(?=" + _DRIVE + ")",
+        r"\b[Tt]he (?:driver|operator) of (" + ANY_NAME + r") (then )?(?=" + _DRIVE + ")",
         lambda m: f"Driver #{v(m[1])[1:]} {m[2] or ''}",
         text,
     )
@@ -449,11 +407,11 @@ def pronoun_subject(text: str) -> str:
     """ "V2 stopped at the sign. V2 then turned left." -> "V2 stopped at the sign. It then turned left.": a
     sentence whose subject is the last one's, when the last names no other participant."""
     parts = _SENTENCE.split(text)
-    v = _renamed(lambda n: f"V{n}")
+    v = renamed(lambda n: f"V{n}")
     for i in range(1, len(parts)):
-        a = re.match(f"({_ANY_NAME}) ", parts[i - 1])
-        b = re.match(f"({_ANY_NAME}) (?!(?:was|is) an? )", parts[i])
-        if a and b and v(a[1]) == v(b[1]) and {v(n) for n in re.findall(_ANY_NAME, parts[i - 1])} == {v(a[1])}:
+        a = re.match(f"({ANY_NAME}) ", parts[i - 1])
+        b = re.match(f"({ANY_NAME}) (?!(?:was|is) an? )", parts[i])
+        if a and b and v(a[1]) == v(b[1]) and {v(n) for n in re.findall(ANY_NAME, parts[i - 1])} == {v(a[1])}:
             parts[i] = "It " + parts[i][b.end() :]
     return " ".join(parts) if any(p.startswith("It ") for p in parts) else text
 
@@ -497,14 +455,14 @@ def carriageway(text: str) -> str:
 
 
 REWRITES: dict[str, Callable[[str], str]] = {
-    "v_short": _renamed(lambda n: f"V{n}"),
-    "vehicle_hash": _renamed(lambda n: f"Vehicle #{n}"),
-    "vehicle_number": _renamed(lambda n: f"Vehicle {n}"),
-    "vehicle_word": _renamed(lambda n: f"Vehicle {_WORDS[n]}"),
-    "unit": _renamed(lambda n: f"Unit {n}"),
-    "v_dash": _renamed(lambda n: f"V-{n}"),
-    "v_space": _renamed(lambda n: f"V {n}"),
-    "possessive_of": _through_v(possessive_of),
+    "v_short": renamed(lambda n: f"V{n}"),
+    "vehicle_hash": renamed(lambda n: f"Vehicle #{n}"),
+    "vehicle_number": renamed(lambda n: f"Vehicle {n}"),
+    "vehicle_word": renamed(lambda n: f"Vehicle {WORDS[n]}"),
+    "unit": renamed(lambda n: f"Unit {n}"),
+    "v_dash": renamed(lambda n: f"V-{n}"),
+    "v_space": renamed(lambda n: f"V {n}"),
+    "possessive_of": through_v(possessive_of),
     "speed_upper": _speed("MPH", "KMPH"),
     "speed_words": _speed("miles per hour", "kilometers per hour"),
     "speed_kph": _speed("mph", "kph"),
@@ -517,17 +475,17 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "compass_was": compass_was,
     "lane_digit": _lane_number(str),
     "lane_hash": _lane_number(lambda n: f"#{n}"),
-    "lane_word": _lane_number(lambda n: _WORDS[n]),
+    "lane_word": _lane_number(lambda n: WORDS[n]),
     "lane_ordinal": lane_ordinal,
     "count_digits": count_digits,
     "count_words": count_words,
-    "driver_of": _through_v(driver_of),
-    "driver_dropped": _through_v(driver_dropped),
+    "driver_of": through_v(driver_of),
+    "driver_dropped": through_v(driver_dropped),
     "driver_number": driver_number,  # (it drops a name: the others keep their own words)
     "pronoun_subject": pronoun_subject,  # (it drops names: the others keep their own words)
-    "semicolons": _through_v(semicolons),
-    "split_and": _through_v(split_and),
-    "join_then": _through_v(join_then),
+    "semicolons": through_v(semicolons),
+    "split_and": through_v(split_and),
+    "join_then": through_v(join_then),
     "travelling": travelling,
     "present_tense": present_tense,
     "turn_verb": turn_verb,
@@ -536,20 +494,46 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "turn_executed": turn_executed,
     "intending_on": intending_on,
     "impact_passive": impact_passive,  # (it swaps the names: each keeps its own words)
-    "impact_collided": _through_v(impact_collided),
-    "impact_impacted": _through_v(impact_impacted),
-    "came_to_stop": _through_v(came_to_stop),
+    "impact_collided": through_v(impact_collided),
+    "impact_impacted": through_v(impact_impacted),
+    "came_to_stop": through_v(came_to_stop),
     "braked": braked,
     "mph_only": mph_only,
     "mph_first": mph_first,
-    "aside_parenthesis": _through_v(aside_parenthesis),
-    "of_possessive": _through_v(of_possessive),
-    "driver_possessive": _through_v(driver_possessive),
+    "aside_parenthesis": through_v(aside_parenthesis),
+    "of_possessive": through_v(of_possessive),
+    "driver_possessive": through_v(driver_possessive),
     "proceeding": proceeding,
     "junction": junction,
     "signal_light": signal_light,
     "british_spelling": british_spelling,
     "carriageway": carriageway,
+    # how sentences are built, and what a participant is called after its introduction (`rewrite_clauses`)
+    "clause_after": clauses.per_sentence(clauses.clause_after),
+    "clause_fronted": clauses.per_sentence(clauses.clause_fronted),
+    "place_after": clauses.per_sentence(clauses.place_after),
+    "join_after": clauses.join_after,
+    "while_participle": clauses.per_sentence(clauses.while_participle),
+    "then_first": clauses.then_first,
+    "rear_ended": clauses.rear_ended,
+    "crashed_into": clauses.crashed_into,
+    "road_word": clauses.road_word,
+    "three_leg": clauses.three_leg,
+    "part_with": clauses.part_with,
+    "struck_in_side": clauses.struck_in_side,
+    "stationary": clauses.stationary,
+    "decelerated": clauses.decelerated,
+    "kind_which": clauses.per_sentence(clauses.kind_which),
+    "kind_aside": clauses.per_sentence(clauses.kind_aside),
+    "make_names": clauses.make_names,  # (it drops names: the others keep their own words)
+    "vehicle_ordinal": clauses.vehicle_ordinal,
+    "police_abbrev": clauses.police_abbrev,
+    "lane_curb": clauses.lane_curb,
+    # how the road and its conditions are said (`rewrite_road`)
+    "limit_posted_at": road.limit_posted_at,
+    "lanes_each_way": road.lanes_each_way,
+    "lanes_total": road.lanes_total,
+    "dark_lighted": road.dark_lighted,
 }
 
 
@@ -568,6 +552,17 @@ REWRITES["writer_police"] = _chain(
 )
 REWRITES["writer_british"] = _chain(
     "vehicle_number", "speed_words", "carriageway", "junction", "british_spelling", "travelling", "compass_direction"
+)
+# (an insurance adjuster's: kinds said as what each was, time clauses first, makes for names, the curb lane)
+REWRITES["writer_adjuster"] = _chain(
+    "kind_which",
+    "join_after",
+    "clause_fronted",
+    "place_after",
+    "struck_in_side",
+    "make_names",
+    "lane_curb",
+    "stationary",
 )
 REWRITES["writer_terse"] = _chain("v_dash", "speed_upper", "compass_was", "pronoun_subject", "semicolons", "turn_verb")
 

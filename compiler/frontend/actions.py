@@ -16,6 +16,7 @@ import re
 
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
+from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
@@ -563,6 +564,8 @@ def read_actions_at(
     # A vehicle on the road drives along its lane first, unless it stood still or came from off the road;
     # one the report shows moving before it stopped drove first.
     moving_at = min((p.at + m.start() for p in pieces for m in _TRAVELLING.finditer(p.text)), default=None)
+    if (under_way := under_way_first(pieces)) is not None:  # "When V2 stopped ..., it was traveling north"
+        moving_at = min(under_way, moving_at if moving_at is not None else under_way)
     # So did one stopped inside a junction: it drove in to stop there ("after being stopped in the
     # intersection"), unlike one stopped at it (at the light, the stop sign).
     moved_first = (

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.names import THING, parties
+from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.compiler.frontend.words import number
@@ -136,7 +137,7 @@ def number_vehicles(text: str) -> str:
         raw = m.group(2).lower()
         return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{number(raw)}"
 
-    return _DRIVER.sub(driver, _VEHICLE.sub(vehicle, text))
+    return ordinal_names(_DRIVER.sub(driver, _VEHICLE.sub(vehicle, text)))
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words

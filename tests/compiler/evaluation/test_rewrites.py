@@ -135,6 +135,99 @@ CASES = [
         "V2, a 1998 Ford Taurus sedan, was traveling north.",
         "V2 (a 1998 Ford Taurus sedan) was traveling north.",
     ),
+    # how sentences are built, and what a participant is called after its introduction (`rewrite_clauses.py`)
+    (
+        "clause_after",
+        "As V2 entered the intersection, its left side was struck by V1. As V1 turned, V2 braked.",
+        "V2's left side was struck by V1 as V2 entered the intersection. V2 braked as V1 turned.",
+    ),
+    (
+        "clause_fronted",
+        "Vehicle #1 was turning left when it was struck by V2. V2 braked as V1 turned.",
+        "When Vehicle #1 was struck by V2, it was turning left. As V1 turned, V2 braked.",
+    ),
+    (
+        "place_after",
+        "At the intersection, the front of V2 struck V1.",
+        "The front of V2 struck V1 at the intersection.",
+    ),
+    (
+        "join_after",
+        "V2 stopped at the sign. V2 then turned left.",
+        "After V2 stopped at the sign, V2 then turned left.",
+    ),
+    (
+        "while_participle",
+        "V1 was attempting a U-turn when it was struck by V2.",
+        "While attempting a U-turn, V1 was struck by V2.",
+    ),
+    ("then_first", "V1 stopped. V1 then turned left.", "V1 stopped. Then V1 turned left."),
+    (
+        "rear_ended",
+        "The front of V1 struck the rear of V2. V2 impacted the back of V3 with its front.",
+        "V1 rear-ended V2. V2 rear-ended V3.",
+    ),
+    ("crashed_into", "V1 struck V2, which was hit by V3.", "V1 crashed into V2, which was hit by V3."),
+    ("road_word", "The roadway had two roadways.", "The road had two roads."),
+    ("three_leg", "at a T-intersection", "at a three-leg intersection"),
+    (
+        "part_with",
+        "The front of V1 struck the left side of V2.",
+        "V1 struck the left side of V2 with its front.",
+    ),
+    ("struck_in_side", "V1 struck the left side of V2.", "V1 struck V2 in the left side."),
+    (
+        "stationary",
+        "V2 was stopped at the light; V1 was stopped by police.",
+        "V2 was stationary at the light; V1 was stopped by police.",
+    ),
+    ("decelerated", "V2 slowed down for slowing traffic.", "V2 decelerated for slowing traffic."),
+    (
+        "kind_which",
+        "V1, a 1996 Honda Civic, was traveling east.",
+        "V1 was a 1996 Honda Civic, which was traveling east.",
+    ),
+    (
+        "kind_aside",
+        "V1 was a 1996 Honda Civic that was traveling east. V2 was a 1999 Ford Taurus traveling west.",
+        "V1, a 1996 Honda Civic, was traveling east. V2, a 1999 Ford Taurus, was traveling west.",
+    ),
+    (
+        "make_names",
+        "Vehicle #1, a 1996 Honda Civic, was behind V2, a 2002 GMC Envoy. Vehicle #1 struck V2.",
+        "Vehicle #1, a 1996 Honda Civic, was behind V2, a 2002 GMC Envoy. The Honda struck the GMC.",
+    ),
+    ("vehicle_ordinal", "Vehicle #1 struck V2's rear.", "The first vehicle struck the second vehicle's rear."),
+    ("police_abbrev", "Vehicle #1 was traveling approximately 30 mph.", "Veh. #1 was traveling approx. 30 mph."),
+    (
+        "lane_curb",
+        "V1 was in the right lane, left of the right lane line.",
+        "V1 was in the curb lane, left of the right lane line.",
+    ),
+    (
+        "writer_adjuster",
+        "V1, a 1996 Honda Civic, was traveling east in the right lane. V2, a 1998 Ford, stopped. V2 turned left.",
+        "V1 was a 1996 Honda Civic, which was traveling east in the curb lane. After V2, a 1998 Ford, stopped, "
+        "the Ford turned left.",
+    ),
+    # how the road and its conditions are said (`rewrite_road.py`)
+    (
+        "limit_posted_at",
+        "The road had a posted speed limit of 48 kmph (30 mph). The posted speed limit was 35 MPH.",
+        "The road was posted at 48 kmph (30 mph). The speed limit was posted at 35 MPH.",
+    ),
+    (
+        "lanes_each_way",
+        "a two-lane, two-way roadway and a four lane undivided road",
+        "a two-way roadway with one lane in each direction and an undivided road with two lanes in each direction",
+    ),
+    (
+        "lanes_total",
+        "a two-way roadway with one lane in each direction and a divided road with two lanes of travel in each "
+        "direction",
+        "a two-lane, two-way roadway and a four-lane, divided road",
+    ),
+    ("dark_lighted", "It was dark, but lighted.", "It was dark-lighted."),
 ]
 
 
