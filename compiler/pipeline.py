@@ -80,7 +80,12 @@ class Sites:
     road_map: RoadMap
     candidates: tuple[SiteMatch, ...]
     roads: int
-    planning: RoadMap  # the map the candidates are on: `road_map`, or its mirror image where traffic keeps left
+    mirror: RoadMap | None = None  # where traffic keeps left, the map's mirror image the candidates are on
+
+    @property
+    def planning(self) -> RoadMap:
+        """The map the candidates are on and lowering plans on: `road_map`, or its mirror image."""
+        return self.mirror or self.road_map
 
 
 @dataclass(frozen=True)
@@ -146,7 +151,7 @@ def _sites(assumed: Assumed, options: Options, log: RunLog) -> Sites:
     spare = default_spare(options.roads) if options.spare is None else options.spare
     planning = planning_map(road_map)
     found = match_sites(assumed.scenario, planning, n=options.roads + spare, seed=options.seed, clamp=True)
-    return Sites(assumed, road_map, tuple(found), options.roads, planning)
+    return Sites(assumed, road_map, tuple(found), options.roads, planning if planning.mirrored else None)
 
 
 def _render_sites(sites: Sites) -> str:
