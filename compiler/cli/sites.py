@@ -50,6 +50,12 @@ def cmd_sites(args: argparse.Namespace) -> int:
     road_map = load_map(args.map or default_map())
     found = survey(road_map, args.kind, min_length=args.min_length)
     print(found.text(), end="")
+    if road_map.keeps_left:
+        print(
+            f"note: traffic keeps left on {road_map.name}: a report's crash is staged here as its mirror image "
+            "(its left turns across the oncoming lanes are right turns)",
+            file=sys.stderr,
+        )
     if args.png:
         draw(road_map, found.sites, args.png, found.short)
         print(f"drawn to {args.png}", file=sys.stderr)

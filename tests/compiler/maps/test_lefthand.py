@@ -11,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from sovarc.compiler.cli import main
 from sovarc.compiler.evaluation.srr import replay
 from sovarc.compiler.geometry.angles import angle_diff
 from sovarc.compiler.geometry.polyline import Polyline
@@ -124,3 +125,9 @@ def test_a_left_hand_opendrive_map_without_its_rule_raises_nothing(tmp_path: Pat
     for match in match_sites(staged, road_map, n=3, clamp=True):
         with contextlib.suppress(SovarcError):  # given up, saying why; any other exception fails the test
             stage_on_site(staged, list(notes), road_map, match)
+
+
+def test_sovarc_sites_says_the_map_keeps_left(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    left = generate(tmp_path, *GRID, "--lefthand").path
+    assert main(["sites", str(left)]) == 0
+    assert "traffic keeps left on g.net.xml" in capsys.readouterr().err
