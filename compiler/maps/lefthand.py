@@ -23,10 +23,10 @@ from lxml import etree
 from sovarc.compiler.fsutil import write_atomic
 from sovarc.compiler.plan import Impact, Plan, Sample, Trajectory
 
-VERSION = "1"  # of the mirroring: part of the cached copy's name, so a change makes a new copy
+VERSION = "2"  # of the mirroring: part of the cached copy's name, so a change makes a new copy
 # SUMO's turn directions as a mirror sees them: left and right swap; a turnaround, which a left-hand
-# network writes 'T' (turning the other way round), is a right-hand one's 't'
-_MIRRORED_DIRS = {"l": "r", "r": "l", "L": "R", "R": "L", "T": "t", "t": "T"}
+# network writes 'T' (turning the other way round), is a right-hand one's 't' (a 't' stays one)
+_MIRRORED_DIRS = {"l": "r", "r": "l", "L": "R", "R": "L", "T": "t"}
 _SHAPES = ("shape", "customShape")
 
 
