@@ -9,8 +9,9 @@ Lowering needs a side, so it is chosen here, and the choice is noted:
 - any other lane change goes toward a lane that surely exists: from lane 1 (the right-most lane of its
   direction, where an unknown lane is planned) only the lane on its left is one of its direction; from a
   higher lane the one below it is.
-Runs after the headings are chosen and before the lanes are (assume.py), so that the lanes it plans are
-kept.
+A lane change with its side, between such a pair whose lanes are not both known, places them the same way
+(beside each other, the changer on the side it comes from). Runs after the headings are chosen and before the
+lanes are (assume.py), so that the lanes it plans are kept.
 """
 
 from __future__ import annotations
@@ -38,18 +39,38 @@ def sideless(p: Participant) -> bool:
 
 
 def choose_sides(known: _Known) -> None:
-    """Give every side-less lane change a side (and, for a pair that meets in one lane, their lanes)."""
+    """Give every side-less lane change a side; for a pair that meets in one lane, plan their unknown lanes
+    beside each other, the side known or not."""
     for pid in list(known.people):
         p = known.people[pid]
-        if sideless(p):
+        partner = known.partner(p)
+        changes = [a for a in p.known_actions if a.kind is ActionKind.CHANGE_LANE]
+        if partner is not None and len(changes) == 1 and _meets_in_one_lane(p, partner, known):
+            if changes[0].to is None:
+                known.people[pid] = _toward(p, partner, known)
+            elif isinstance(changes[0].to, Side):
+                known.people[pid] = _beside(p, partner, changes[0].to, known)
+        elif sideless(p):
             known.people[pid] = _choose(p, known)
 
 
+def _beside(p: Participant, partner: Participant, side: Side, known: _Known) -> Participant:
+    """A lane change to a known side into the partner's lane: the lane of the pair not known is planned beside
+    the other's (the changer in lane 1 or 2 when neither is known)."""
+    step = 1 if side is Side.LEFT else -1
+    mine, theirs = p.lane, partner.lane
+    if isinstance(mine, int) and not isinstance(theirs, int) and mine + step >= 1:
+        known.people[partner.id] = _placed(partner, mine + step, f"the lane {p.id} changes into", known, theirs)
+    elif isinstance(theirs, int) and not isinstance(mine, int) and theirs - step >= 1:
+        p = _placed(p, theirs - step, f"beside {partner.id}, whose lane it changes into", known, mine)
+    elif not isinstance(mine, int) and not isinstance(theirs, int):
+        start = 1 if side is Side.LEFT else 2
+        p = _placed(p, start, f"changing {side.value} into {partner.id}'s lane", known, mine)
+        known.people[partner.id] = _placed(partner, start + step, f"the lane {p.id} changes into", known, theirs)
+    return p
+
+
 def _choose(p: Participant, known: _Known) -> Participant:
-    partner = known.partner(p)
-    changes = [a for a in p.known_actions if a.kind is ActionKind.CHANGE_LANE]
-    if partner is not None and len(changes) == 1 and _meets_in_one_lane(p, partner, known):
-        return _toward(p, partner, known)
     lane = p.lane if isinstance(p.lane, int) else 1
     actions = []
     for a in p.known_actions:

@@ -100,3 +100,23 @@ def test_a_side_less_lane_change_stages_on_the_town_into_its_partners_lane() -> 
     assert any("V2 change_lane side unknown: planned to the left" in n for n in lowered.notes)
     v1, v2 = lowered.routes["V1"], lowered.routes["V2"]
     assert set(v1.lanes) <= set(v2.lanes) and len(v2.lanes) > len(v1.lanes)  # it moved over into V1's lane
+
+
+def test_a_sided_lane_change_places_a_pair_of_unknown_lanes_beside_each_other() -> None:
+    """With its side known, the changer starts on that side's far side of its partner's lane."""
+    for side, mine, theirs in (("left", 1, 2), ("right", 2, 1)):
+        text = sov("unknown", "unknown").replace("      change_lane\n", f"      change_lane(to: {side})\n")
+        filled, notes = assume(parse(text))
+        assert (_who(filled, "V2").lane, _who(filled, "V1").lane) == (mine, theirs)
+        assert f"V2 lane unknown: planned in lane {mine} (changing {side} into V1's lane)" in notes
+    filled, _ = assume(parse(sov("unknown", "3").replace("      change_lane\n", "      change_lane(to: right)\n")))
+    assert _who(filled, "V1").lane == 2
+    filled, _ = assume(parse(sov("1", "unknown").replace("      change_lane\n", "      change_lane(to: left)\n")))
+    assert _who(filled, "V1").lane == 1 and _who(filled, "V2").lane == 1  # none right of lane 1
+
+
+def test_a_sided_lane_change_with_unknown_lanes_stages_on_the_town() -> None:
+    text = sov("unknown", "unknown").replace("      change_lane\n", "      change_lane(to: right)\n")
+    lowered = lower(parse(text), load_map(TOWN))[0]
+    v1, v2 = lowered.routes["V1"], lowered.routes["V2"]
+    assert set(v1.lanes) <= set(v2.lanes) and len(v2.lanes) > len(v1.lanes)
