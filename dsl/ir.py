@@ -134,7 +134,10 @@ ACTION_SPECS: Mapping[ActionKind, ActionSpec] = MappingProxyType(
             _VEHICLE, "optional", "turn right at a junction or into a road; `to` is the lane entered"
         ),
         ActionKind.CHANGE_LANE: ActionSpec(
-            _VEHICLE, "required", "move to lane `to` (a number, or left/right when only the side is known)"
+            _VEHICLE,
+            "optional",
+            "move to lane `to` (a number, or left/right when only the side is known; none when the report does not "
+            "say which way)",
         ),
         ActionKind.GO_ACROSS: ActionSpec(_VEHICLE, "none", "drive straight through a junction"),
         ActionKind.STOP: ActionSpec(_VEHICLE, "none", "slow to a standstill and stay stopped"),

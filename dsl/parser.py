@@ -339,6 +339,13 @@ class _Builder(Transformer[Token, Any]):
             value = int(float(tok))
             if "." in tok or value < 1:
                 self._error(f"a lane number is a whole number of at least 1, got {tok}", self._tok_span(tok))
+        elif tok == "unknown":  # one spelling of "not said": the action without its argument, as a turn's lane
+            value = UNKNOWN
+            self._error(
+                "a target not said is not written 'unknown'",
+                self._tok_span(tok),
+                "leave out (to: ...): an action without it is one whose target lane or side the report does not give",
+            )
         else:
             value = self._enum(Side, tok, "side", unknown_ok=False)
         return _Field(str(key), value, self._span(meta))

@@ -16,6 +16,7 @@ import re
 
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
+from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
 from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
@@ -405,9 +406,9 @@ def _found(
                     act = ActionKind.RETROGRADE  # out of the oncoming lane into another's: onto the wrong side
                 if act is ActionKind.CHANGE_LANE:  # see lanes.lane_change_side
                     side = lane_change_side(done, m.start(), m.end(), said + done[: m.start()]) or toward
-                    if side is None:
+                    if side is None and not names_a_lane_change(m.group()):  # see sideless.py
                         continue
-                    to = Side(side)
+                    to = Side(side) if side else None
                 if act is ActionKind.GO_ACROSS and not at_junction:
                     continue
                 # "turning left after being stopped": what the after-clause says came first
@@ -506,7 +507,7 @@ def read_actions_at(
             return (Action(ActionKind.FOLLOW_LANE),), (moving,)
         return UNKNOWN, ()
     plan = _planned_turn(pieces, road) if side_impact else None
-    found = _carried_out(_found(pieces, road, heading, toward), plan, struck_behind)
+    found = one_lane_change(_carried_out(_found(pieces, road, heading, toward), plan, struck_behind))
     kinds = {a.kind for _, a in found}
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across

@@ -225,6 +225,9 @@ def _settle_actions(
                 f"{pid} actions: the model's {_name(a)} cites sentence(s) {_cites(cited)}, which do not state it "
                 f"of {pid}; rejected"
             )
+        elif against and (sided := _side_of(against[0], a)) is not None:  # no contradiction: the side it left open
+            out = [(n, sided if r is against[0] else r) for n, r in out]
+            notes.append(f"{pid} actions: the rules read a change_lane without its side; kept the model's {_name(a)}")
         elif against:
             notes.append(f"{pid} actions: the model read {_name(a)}, the rules {_name(against[0])}; kept the rules")
         else:
@@ -233,10 +236,17 @@ def _settle_actions(
             out.insert(index, (at, a))
             notes.append(f"{pid} actions: the model's {_name(a)} is stated in sentence {at}; added to the rules'")
     read = {_name(a) for a in modelled}
-    missing = [a for a in ruled if _name(a) not in read and a.kind is not ActionKind.FOLLOW_LANE]
+    kept = [r for _, r in out]
+    missing = [a for a in ruled if _name(a) not in read and a.kind is not ActionKind.FOLLOW_LANE and a in kept]
     if missing:
         notes.append(f"{pid} actions: the model did not read {_words(tuple(missing))}; kept the rules'")
     return _dedupe(tuple(a for _, a in out)), notes
+
+
+def _side_of(ruled: Action, modelled: Action) -> Action | None:
+    """The rules' side-less lane change with the side the model gives it, if that is what the two are."""
+    lane_changes = ruled.kind is modelled.kind is ActionKind.CHANGE_LANE
+    return replace(ruled, to=modelled.to) if lane_changes and ruled.to is None and modelled.to is not None else None
 
 
 def _cites(numbers: tuple[int, ...]) -> str:

@@ -3,15 +3,17 @@
 Lowering needs a heading, a lane and actions for every vehicle, and a crash type with its
 striker and victim. Each choice here follows from the facts that are known (a rear-end's
 vehicles share a heading, a head-on's oppose unless one of them turns back) and is
-returned as a note that ends up in the plan. Known facts are never changed, but for one
-contradiction no site can stage: two cars crossing at right angles cannot both go straight
-across a T-junction, since one of them comes from its stem (`_across_a_t`).
+returned as a note that ends up in the plan (the side of a lane change said without one:
+sides.py). Known facts are never changed, but for one contradiction no site can stage: two
+cars crossing at right angles cannot both go straight across a T-junction, since one of them
+comes from its stem (`_across_a_t`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from sovarc.compiler.lower.sides import choose_sides
 from sovarc.dsl.ir import (
     Action,
     ActionKind,
@@ -74,6 +76,7 @@ def assume(scenario: Scenario) -> tuple[Scenario, list[str]]:
         p = people.get(pid)
         if p is not None and isinstance(p.heading, Unknown) and p.role is Role.VEHICLE:
             people[pid] = _heading(p, known)
+    choose_sides(known)  # the side of a lane change the report left out: it may place the pair's lanes
     for pid, p in list(people.items()):
         if isinstance(p.lane, Unknown) and p.role is Role.VEHICLE:
             people[pid] = _lane(p, known)

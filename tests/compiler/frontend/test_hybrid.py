@@ -22,7 +22,19 @@ from sovarc.compiler.frontend.layers import cue, motion_layer, states_action
 from sovarc.compiler.frontend.providers import ProviderError
 from sovarc.compiler.frontend.rules import extract
 from sovarc.dsl import read_source, to_text, verify
-from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Crash, CrashType, Heading, Participant, Road, Role, Scenario
+from sovarc.dsl.ir import (
+    UNKNOWN,
+    Action,
+    ActionKind,
+    Crash,
+    CrashType,
+    Heading,
+    Participant,
+    Road,
+    Role,
+    Scenario,
+    Side,
+)
 from sovarc.dsl.span import Source
 
 from tests.conftest import EXAMPLES, Golden
@@ -351,3 +363,18 @@ def test_one_move_named_two_ways_keeps_the_rules_name() -> None:
     merged, notes = merge(rules, parse_answer(answer, ["V1", "V2"], shown), shown)
     assert [a.kind for a in merged.participant("V1").known_actions] == ["follow_lane", "retrograde"]
     assert "V1 actions: the model read change_lane_left, the rules retrograde; kept the rules" in notes
+
+
+def test_the_model_gives_the_side_the_rules_left_open() -> None:
+    """A lane change the rules read without its side and the model with one is one move: the side is kept."""
+    shown = motion_layer("V1 was northbound in the right lane. V2 was northbound. V2 changed lanes and struck V1.")
+    rules = _two(FOLLOW, (*FOLLOW, Action(ActionKind.CHANGE_LANE)))
+    answer = '{"V1":["follow",1],"V2":["follow","lane_right",2,3],"crash":["side","V2","V1",3]}'
+    merged, notes = merge(rules, parse_answer(answer, ["V1", "V2"], shown), shown)
+    assert merged.participant("V2").known_actions[-1] == Action(ActionKind.CHANGE_LANE, Side.RIGHT)
+    assert "V2 actions: the rules read a change_lane without its side; kept the model's change_lane_right" in notes
+    assert not any("did not read" in n for n in notes)
+    # a side against a side stays the rules'
+    sided = _two(FOLLOW, (*FOLLOW, Action(ActionKind.CHANGE_LANE, Side.LEFT)))
+    merged, _ = merge(sided, parse_answer(answer, ["V1", "V2"], shown), shown)
+    assert merged.participant("V2").known_actions[-1] == Action(ActionKind.CHANGE_LANE, Side.LEFT)

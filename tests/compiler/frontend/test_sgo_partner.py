@@ -67,18 +67,18 @@ def test_a_lane_change_with_its_side_keeps_it() -> None:
 
 def test_the_victims_side_says_nothing_of_its_own_lane_change() -> None:
     """Struck on its right side, the automated vehicle was met from its right: whether it moved left or right is
-    not said, so a lane change without a side stays unread."""
+    not said, so its lane change is read without a side."""
     s = read(
         "The Waymo AV began to change lanes on [XXX] when the front of a sedan made contact with the passenger side "
         "of the Waymo AV."
     )
     assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
-    assert ActionKind.CHANGE_LANE not in [a.kind for a in actions(s, "V1")]
+    assert actions(s, "V1")[-1] == Action(ActionKind.CHANGE_LANE)
 
 
 def test_no_side_met_no_side_read() -> None:
     s = read("The Waymo AV was traveling north when it was rear-ended by a sedan that was switching lanes.")
-    assert ActionKind.CHANGE_LANE not in [a.kind for a in actions(s, "V2")]
+    assert actions(s, "V2")[-1] == Action(ActionKind.CHANGE_LANE)
 
 
 @pytest.mark.parametrize(

@@ -1,0 +1,36 @@
+"""A lane change said without its side ("V2, which was switching lanes, rear-ended V1"; "V2 changed lanes and
+struck V1"): read as a lane change whose side is not known, not dropped. The IR writes it `change_lane` with no
+target, and lowering's assume pass chooses the side with a note (compiler/lower/sides.py).
+
+A report that gives the side anywhere ("changed lanes ... its lane change to the left") says the one move twice:
+the side-less mention is then that move, not another.
+
+Only words that name a lane change say one without its side ("changed lanes", "switching lanes", "a lane change",
+"merging"). A move around another road user, or out of its lane, with no side said may be made within the lane (a
+motorcycle splitting lanes), onto the shoulder or into the other direction's lanes: those stay unread.
+"""
+
+from __future__ import annotations
+
+import re
+
+from sovarc.dsl.ir import Action, ActionKind
+
+_NAMED = re.compile(r"\b(?:chang|switch)\w* lanes?\b|\blane[- ]chang|\bmerg(?:es?|ed|ing)\b", re.I)
+
+
+def names_a_lane_change(words: str) -> bool:
+    """Whether the words that read a lane change name one ("changed lanes"), not only a move sideways."""
+    return _NAMED.search(words) is not None
+
+
+def sideless(action: Action) -> bool:
+    return action.kind is ActionKind.CHANGE_LANE and action.to is None
+
+
+def one_lane_change(found: list[tuple[int, Action]]) -> list[tuple[int, Action]]:
+    """The actions read (offset, action), without side-less lane changes when a lane change with its side or
+    lane was read for the same vehicle."""
+    if not any(a.kind is ActionKind.CHANGE_LANE and a.to is not None for _, a in found):
+        return found
+    return [(at, a) for at, a in found if not sideless(a)]
