@@ -588,16 +588,3 @@ def read_actions_at(
         described = next((p.at + m.start() for p in pieces if (m := _DESCRIBED.search(p.text))), pieces[0].at)
         where.insert(0, moving_at if moving_at is not None else described)
     return tuple(ordered), tuple(where)
-
-
-_PRECRASH_LEFT = re.compile(
-    r"critical pre-?crash event\b[^.]*?\b(V\d)\b[^.]*?\b(?:over the lane line on (?:the )?left side|"
-    r"lane line on left side|cross(?:ed|ing)? (?:the )?cent(?:er|re) ?line|left of cent(?:er|re))",
-    re.I,
-)
-
-
-def precrash_wrong_way(sents: list[str]) -> dict[str, int]:
-    """Vehicles whose coded pre-crash event ("travelling over the lane line on the left side"), often written
-    after the impact, says they went into the opposing lane; each with the index of the sentence that says so."""
-    return {m.group(1): i for i, s in enumerate(sents) if (m := _PRECRASH_LEFT.search(s))}

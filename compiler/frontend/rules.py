@@ -14,7 +14,7 @@ import re
 from dataclasses import replace
 from typing import Any
 
-from sovarc.compiler.frontend.actions import precrash_wrong_way, read_actions_at, what_was_done
+from sovarc.compiler.frontend.actions import read_actions_at, what_was_done
 from sovarc.compiler.frontend.backing import backing, backing_leads
 from sovarc.compiler.frontend.clauses import Piece, by_participant, pieces
 from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, read_crash_at, sides_met
@@ -23,6 +23,7 @@ from sovarc.compiler.frontend.doors import door_met
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
+from sovarc.compiler.frontend.precrash import precrash_wrong_way
 from sovarc.compiler.frontend.situation import wrong_side
 from sovarc.compiler.frontend.standing import introduced_doing, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
