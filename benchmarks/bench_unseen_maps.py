@@ -11,13 +11,13 @@ left-turn pockets, one-way roads, nodes moved off the grid, or traffic that keep
 also round-tripped through OpenDRIVE, as `netgen_maps` does. The files go to netgen_maps' cache, never into
 the repository.
 
-For each map it prints the sites found per kind and the CPU seconds to load the map and find them, then SRR per
-kind over a sample of the ground-truth scenarios (the first SAMPLE of each kind in an order fixed by the
-sha256 of their names, so the sample is the same on every run): over all scenario-sites / over those the map
-has a site of the needed shape for (`srr.NO_SHAPE`). Last come the defects: every scenario-site on which the
-compiler met an exception on the map's geometry (the pipeline's "failed on this site's geometry" note, on a
-site tried or given up), which issue 17 counts as defects to fix, not as misses. --failures also prints every
-failed scenario-site of a shape the map has, with its reason.
+For each map (and pooled over every map, last) it prints the sites found per kind and the CPU seconds to load
+the map and find them, then SRR per kind over a sample of the ground-truth scenarios (the first SAMPLE of each
+kind in an order fixed by the sha256 of their names, so the sample is the same on every run): over all
+scenario-sites / over those the map has a site of the needed shape for (`srr.NO_SHAPE`). Last come the
+defects: every scenario-site on which the compiler met an exception on the map's geometry (the pipeline's
+"failed on this site's geometry" note, on a site tried or given up), which issue 17 counts as defects to fix,
+not as misses. --failures also prints every failed scenario-site of a shape the map has, with its reason.
 
 Seeds below 3000 are for development (looked at, diagnosed); 3000 and above are held out, run for figures only.
 """
@@ -108,6 +108,16 @@ def sample(truth: Path, per_kind: int) -> list[tuple[Path, object]]:
     return chosen
 
 
+def _rate(rows: list[dict], kind: RoadKind) -> str:
+    """SRR of one kind over all its rows / over those of a shape the map has; '-' for none."""
+    chosen = [r for r in rows if r["kind"] == kind.value]
+    ok = sum(r["passed"] for r in chosen)
+    hosted = sum(r["failure"] != NO_SHAPE for r in chosen)
+    if not chosen:
+        return "-"
+    return f"{100.0 * ok / len(chosen):.0f}/{100.0 * ok / hosted:.0f}" if hosted else "-/-"
+
+
 def defects(rows: list[dict]) -> list[str]:
     found = []
     for row in rows:
@@ -132,6 +142,7 @@ def main() -> None:
     print(f"{'map':<28}{'sites X/T/S':>13}{'sites s':>9}  {'SRR X':>12} {'SRR T':>12} {'SRR S':>12}  defects")
     found: list[str] = []
     missed: list[str] = []
+    every: list[dict] = []  # the rows of every map, for the pooled rates
     for k in range(args.maps):
         name, options = network(args.first_seed + k)
         paths = generate(name, options, seed=args.first_seed + k)
@@ -145,13 +156,8 @@ def main() -> None:
             rows = []
             for file, scenario in scenarios:
                 rows += reconstruct(scenario, file, road_map, roads=args.roads, seed=args.seed)  # type: ignore[arg-type]
-            rates = []
-            for kind in KINDS:
-                chosen = [r for r in rows if r["kind"] == kind.value]
-                ok = sum(r["passed"] for r in chosen)
-                hosted = sum(r["failure"] != NO_SHAPE for r in chosen)
-                rate = f"{100.0 * ok / len(chosen):.0f}/{100.0 * ok / hosted:.0f}" if hosted else "-/-"
-                rates.append(f"{rate if chosen else '-':>12}")
+            every += rows
+            rates = [f"{_rate(rows, kind):>12}" for kind in KINDS]
             bad = defects(rows)
             found += [f"{label}: {d}" for d in bad]
             if args.failures:
@@ -159,6 +165,8 @@ def main() -> None:
                            for r in rows if not r["passed"] and r["failure"] != NO_SHAPE]  # fmt: skip
             sites = "/".join(str(counts[kind]) for kind in KINDS)
             print(f"{label:<28}{sites:>13}{site_s:9.2f}  {' '.join(rates)}  {len(bad)}", flush=True)
+    pooled = " ".join(f"{_rate(every, kind):>12}" for kind in KINDS)
+    print(f"{'every map':<28}{'':>13}{'':>9}  {pooled}  {len(found)}")
     for line in missed:
         print("  failed: " + line)
     print(f"\n{len(found)} defect(s)")
