@@ -22,12 +22,12 @@ whose junctions are not right-angled.
 from __future__ import annotations
 
 import hashlib
-import os
 import re
 import subprocess
 from pathlib import Path
 
 import sumo
+from sovarc.compiler.fsutil import user_cache
 
 BIN = Path(sumo.SUMO_HOME) / "bin"
 SEED = 17
@@ -48,8 +48,7 @@ GROUPS = {"gen-dev": ("grid2", "spider"), "gen-held-out": ("grid1long", "random"
 
 
 def cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "generated"
+    return user_cache("generated")
 
 
 def _run(tool: str, args: list[str], cwd: Path) -> None:

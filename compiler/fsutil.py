@@ -1,10 +1,16 @@
-"""Writing outputs so that no command ever leaves a half-written file behind."""
+"""Writing outputs so that no command ever leaves a half-written file behind, and where sovarc caches."""
 
 from __future__ import annotations
 
 import os
 import tempfile
 from pathlib import Path
+
+
+def user_cache(*parts: str) -> Path:
+    """A place in sovarc's own cache: $XDG_CACHE_HOME/sovarc, else ~/.cache/sovarc."""
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base, "sovarc", *parts)
 
 
 def write_atomic(path: str | os.PathLike[str], data: str | bytes) -> None:

@@ -10,19 +10,17 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
-import os
 from pathlib import Path
 from typing import Any
 
 from sovarc.compiler.frontend.providers.base import Provider
-from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.fsutil import user_cache, write_atomic
 
 CACHE_VERSION = 1
 
 
 def default_answer_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "answers"
+    return user_cache("answers")
 
 
 def answer_key(provider: Provider, system: str, user: str, schema: dict[str, Any], max_tokens: int) -> str:

@@ -15,15 +15,13 @@ are the map's own.
 
 from __future__ import annotations
 
-import os
 from dataclasses import replace
 from pathlib import Path
 
 from lxml import etree
-from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.plan import Impact, Plan, Sample, Trajectory
+from sovarc.compiler.plan import Plan, Sample, Trajectory
 
-VERSION = "2"  # of the mirroring: part of the cached copy's name, so a change makes a new copy
+MIRROR_VERSION = "2"  # of the mirroring: part of the cached copy's name, so a change makes a new copy
 # SUMO's turn directions as a mirror sees them: left and right swap; a turnaround, which a left-hand
 # network writes 'T' (turning the other way round), is a right-hand one's 't' (a 't' stays one)
 _MIRRORED_DIRS = {"l": "r", "r": "l", "L": "R", "R": "L", "T": "t"}
@@ -61,21 +59,8 @@ def mirror_heading(heading: float) -> float:
     return (180.0 - heading) % 360.0
 
 
-def mirrored_network(net_file: Path, digest: str) -> Path:
-    """The mirror image of a left-hand network (`net_file`, whose content hashes to `digest`), made
-    once and kept in the cache beside netconvert's conversions."""
-    target = _cache_dir() / f"{digest[:16]}-mirror{VERSION}.net.xml"
-    if not target.is_file():
-        write_atomic(target, _mirror_bytes(net_file))
-    return target
-
-
-def _cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "mirrored"
-
-
-def _mirror_bytes(net_file: Path) -> bytes:
+def mirror_bytes(net_file: Path) -> bytes:
+    """The SUMO network in `net_file` as its mirror image across the x axis, keeping right."""
     tree = etree.parse(str(net_file), etree.XMLParser(remove_comments=True, huge_tree=True))
     root = tree.getroot()
     root.attrib.pop("lefthand", None)  # the image keeps right
@@ -110,17 +95,13 @@ def _mirror_shape(shape: str) -> str:
 def mirror_plan(plan: Plan) -> Plan:
     """A plan made on a map's mirror image, mirrored back onto the map: the same lanes and edges, each
     pose's y negated and its heading mirrored, and a note saying so."""
-    impact = plan.impact
-    point = mirror_point(*impact.point)
+    impact = replace(plan.impact, point=mirror_point(*plan.impact.point))
     trajectories = tuple(_mirror_trajectory(t) for t in plan.trajectories)
     note = (
         "the map keeps left: planned on its mirror image, so the report's left and right are swapped "
         "(its left turns across the oncoming lanes are right turns here), as is its compass's north and south"
     )
-    return replace(
-        plan, impact=Impact(impact.time, point, impact.radius, impact.striker, impact.victim, impact.type),
-        trajectories=trajectories, notes=(*plan.notes, note),
-    )  # fmt: skip
+    return replace(plan, impact=impact, trajectories=trajectories, notes=(*plan.notes, note))
 
 
 def _mirror_trajectory(trajectory: Trajectory) -> Trajectory:

@@ -15,9 +15,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, NoReturn
 from xml.etree import ElementTree
 
-from sovarc.compiler.maps.lefthand import keeps_left, mirrored_network
+from sovarc.compiler.maps.lefthand import keeps_left
 from sovarc.compiler.maps.netconvert import ToolError, netconvert_version
-from sovarc.compiler.maps.networks import network_of
+from sovarc.compiler.maps.networks import mirrored_network, network_of
 from sovarc.compiler.plan import Network
 from sovarc.dsl.errors import Diagnostic, InputError
 from sovarc.dsl.span import Span

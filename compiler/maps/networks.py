@@ -29,8 +29,8 @@ import tempfile
 from dataclasses import replace
 from pathlib import Path
 
-from sovarc.compiler.fsutil import write_atomic
-from sovarc.compiler.maps.lefthand import opendrive_keeps_left
+from sovarc.compiler.fsutil import user_cache, write_atomic
+from sovarc.compiler.maps.lefthand import MIRROR_VERSION, mirror_bytes, opendrive_keeps_left
 from sovarc.compiler.maps.netconvert import convert_opendrive, netconvert_version, run_netconvert
 from sovarc.compiler.plan import Network
 from sovarc.dsl.errors import Diagnostic, InputError
@@ -51,8 +51,7 @@ _V15_ATTRIBUTES = tuple(
 
 
 def cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "networks"
+    return user_cache("networks")
 
 
 def network_of(map_path: str | os.PathLike[str], sha256: str | None = None) -> Network:
@@ -85,6 +84,13 @@ def sumo_network(xodr: Path, sha256: str) -> Path:
         made = Path(tmp) / target.name
         convert_opendrive(xodr, made, lefthand=left)
         return _store(target, made.read_bytes())
+
+
+def mirrored_network(net: Path, sha256: str) -> Path:
+    """The cached mirror image of a left-hand SUMO network (lefthand.py) whose map hashes to `sha256`
+    (made now if not cached yet)."""
+    target = _cached(sha256, f"{net.name[: -len(SUMO_SUFFIX)]}-mirror{MIRROR_VERSION}{SUMO_SUFFIX}")
+    return target if target.is_file() else _store(target, mirror_bytes(net))
 
 
 def opendrive_network(net: Path, sha256: str, named: Path | None = None) -> Path:

@@ -258,8 +258,8 @@ def _by_cross(connections: tuple[Connection, ...], arms: list[Arm]) -> tuple[Con
     slot = {lane.id: arm.slot for arm in arms for lane in arm.incoming + arm.outgoing}
     named = []
     for c in connections:
-        turn = (slot[c.to_lane] - slot[c.from_lane]) % 4
-        named.append(c if turn == 0 else replace(c, direction=_cross_turn(slot[c.from_lane], slot[c.to_lane])))
+        turn = _cross_turn(slot[c.from_lane], slot[c.to_lane])
+        named.append(c if turn == TURNS[0] else replace(c, direction=turn))
     return tuple(sorted(named, key=lambda c: (c.from_lane, c.to_lane, c.direction)))
 
 

@@ -24,6 +24,7 @@ from typing import Any
 from sovarc.compiler.frontend.providers.base import ProviderError
 from sovarc.compiler.frontend.providers.grammar import compact_json_grammar
 from sovarc.compiler.frontend.providers.model_file import MODEL_FILE_NAME, MODEL_SHA256, ensure_model_file
+from sovarc.compiler.fsutil import user_cache
 
 DEFAULT_SEED = 1234
 LOAD_TIMEOUT_S = 300.0
@@ -31,8 +32,7 @@ WORKER_MODULE = "sovarc.compiler.frontend.providers._llama_worker"
 
 
 def default_log_file() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "llama.log"
+    return user_cache("llama.log")
 
 
 class EmbeddedProvider:

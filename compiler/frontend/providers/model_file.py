@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from sovarc.compiler.frontend.providers.base import ProviderError
-from sovarc.compiler.fsutil import write_atomic
+from sovarc.compiler.fsutil import user_cache, write_atomic
 
 MODEL_FILE_NAME = "qwen2.5-coder-1.5b-instruct-q4_k_m.gguf"
 MODEL_SIZE = 1_117_320_768
@@ -27,8 +27,7 @@ _CHUNK = 8 << 20
 
 
 def default_cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "sovarc" / "models"
+    return user_cache("models")
 
 
 def installed_part_paths() -> list[Path]:
