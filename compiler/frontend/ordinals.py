@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import re
 
-_ORDINAL = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
+from sovarc.compiler.frontend.words import ORDINALS
+
 _NAMED = re.compile(r"\b(?:the )?(first|second|third|fourth|fifth) vehicle\b(?![\w-])", re.I)
 _NUMBERED = re.compile(r"\b[VP]\d\b")
 # An ordinal said as a name opens a sentence or a clause somewhere ("The first vehicle was traveling north", "...,
@@ -29,4 +30,4 @@ def ordinal_names(text: str) -> str:
         return text
     if not _AS_SUBJECT.search(text) or _PLACED.search(text):
         return text
-    return _NAMED.sub(lambda m: f"V{_ORDINAL[m.group(1).lower()]}", text)
+    return _NAMED.sub(lambda m: f"V{ORDINALS[m.group(1).lower()]}", text)

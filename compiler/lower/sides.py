@@ -21,8 +21,6 @@ from typing import Protocol
 
 from sovarc.dsl.ir import ActionKind, CrashType, Heading, Participant, Side
 
-_OTHER = {Side.LEFT: Side.RIGHT, Side.RIGHT: Side.LEFT}
-
 
 class _Known(Protocol):
     people: dict[str, Participant]
