@@ -13,6 +13,7 @@ import difflib
 import re
 from dataclasses import replace
 
+from sovarc.compiler.frontend.capitals import sentence_case
 from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.dsl.explain import check_evidence
 from sovarc.dsl.ir import FACT_PATH, Evidence, Reader, Scenario, Unknown
@@ -36,9 +37,11 @@ class Alignment:
         self.first: list[int | None] = [None] * len(read)
         self.last: list[int | None] = [None] * len(read)
         words = [read[s:e] for s, e in ours]
+        # (a report in capitals is read in sentence case, letter for letter: see `capitals`)
+        recased = sentence_case(report)
         # words compare by their respelling, so a report that writes "carriageway" or "N/B" throughout aligns
         # word for word with the text read, which says "roadway" and "northbound"
-        matcher = difflib.SequenceMatcher(None, words, [spell_out(report[s:e]) for s, e in theirs], autojunk=False)
+        matcher = difflib.SequenceMatcher(None, words, [spell_out(recased[s:e]) for s, e in theirs], autojunk=False)
         for op, i1, i2, j1, j2 in matcher.get_opcodes():
             if op == "equal":
                 for (s, e), (t, u) in zip(ours[i1:i2], theirs[j1:j2], strict=True):

@@ -6,23 +6,25 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from sovarc.compiler.frontend.capitals import sentence_case
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
+from sovarc.compiler.frontend.labels import police_labels
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.compiler.frontend.words import number
 
-# V1, V-1, V 1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
+# V1, V-1, V 1, V#1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
-    r"\b(?:V(?:-|(?<=\bV) )?(\d)(?![\w-])(?!\.\d)|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)"
-    r"(?![\w-]))",
+    r"\b(?:V(?:-|#\s*|(?<=\bV) )?(\d)(?![\w-])(?!\.\d)"
+    r"|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)(?![\w-]))",
     re.IGNORECASE,
 )
 # Police forms number the drivers as their vehicles: "Driver #1", "Driver 2", "driver one" is the driver of V1.
 _DRIVER = re.compile(
-    r"\b([Dd])river\s*(?:#\s*|no\.\s*|number\s+)?(\d|one|two|three|four|five)(?![\w-])(?!\s*(?:years?|mph)\b)"
+    r"\b([Dd])(?:river|RIVER)\s*(?:#\s*|no\.\s*|number\s+)?(\d|one|two|three|four|five)(?![\w-])(?!\s*(?:years?|mph)\b)"
 )
 _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 # A group of pedestrians counted, not numbered: "struck three pedestrians" is three road users.
@@ -127,9 +129,12 @@ def _number_cyclist(text: str) -> str:
 
 
 def number_vehicles(text: str) -> str:
-    """Rewrite every way of numbering a vehicle ("V 1", "Vehicle #1", "Unit 1") as V1, V2, ..."""
+    """Rewrite every way of numbering a vehicle ("V 1", "Vehicle #1", "Unit 1", police forms' "U1", "Car A": see
+    `labels`) as V1, V2, ..."""
 
     def vehicle(m: re.Match[str]) -> str:
+        if re.match(r"unit\b", m.group(), re.I) and re.match(r"\s+of (?:the|an?)\b", text[m.end() :], re.I):
+            return m.group()  # "Unit 4 of the apartment building": a unit of a place, not a vehicle's label
         raw = (m.group(1) or m.group(2)).lower()
         return f"V{number(raw)}"
 
@@ -137,6 +142,7 @@ def number_vehicles(text: str) -> str:
         raw = m.group(2).lower()
         return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{number(raw)}"
 
+    text = police_labels(text)
     return ordinal_names(_DRIVER.sub(driver, _VEHICLE.sub(vehicle, text)))
 
 
@@ -214,7 +220,7 @@ def prepare_report(text: str) -> Prepared:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
     that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
     the words each party numbered by rule was named by."""
-    labelled, note, words = parties(number_vehicles(spell_out(text)))
+    labelled, note, words = parties(number_vehicles(spell_out(sentence_case(text))))
     labelled = in_past(labelled)
     return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
@@ -310,7 +316,7 @@ def check_narrative(text: str, name: str) -> None:
 def unrepresented(text: str) -> list[str]:
     """What the report says that the scenario IR cannot hold, named for the user instead of dropped silently."""
     found: list[str] = []
-    named = normalize_names(text)
+    named = normalize_names(spell_out(sentence_case(text)))
     impacts = [s for s in sentences(named) if describes_impact(s)]
     if len(impacts) > 1:
         found.append(f"only the first impact is encoded; the report describes {len(impacts)} impact sentences")

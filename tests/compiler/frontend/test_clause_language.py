@@ -47,7 +47,8 @@ def test_police_abbreviations_read_as_the_words_written_out() -> None:
 
 def test_an_abbreviated_vehicle_is_one_only_before_its_number() -> None:
     said = spell_out("Veh 2 and Veh. #1 passed a veh. in lane 1 at approx. 30 mph.")
-    assert said == "Vehicle 2 and Vehicle #1 passed a veh. in lane 1 at approximately 30 mph."
+    # (unnumbered, "a veh." is a vehicle, not a participant's label: see `forms`)
+    assert said == "Vehicle 2 and Vehicle #1 passed a vehicle in lane 1 at approximately 30 mph."
 
 
 def test_evidence_of_an_abbreviated_report_quotes_its_own_words() -> None:
