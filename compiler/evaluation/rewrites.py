@@ -19,6 +19,7 @@ from collections.abc import Callable
 from sovarc.compiler.evaluation import rewrite_clauses as clauses
 from sovarc.compiler.evaluation import rewrite_road as road
 from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
+from sovarc.compiler.evaluation.rewrite_police import POLICE
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
 
 # "V1's front" -> "the front of V1": the possessive and the of-phrase name the same part.
@@ -534,6 +535,8 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "lanes_each_way": road.lanes_each_way,
     "lanes_total": road.lanes_total,
     "dark_lighted": road.dark_lighted,
+    # a police agency's conventions: capitals, form labels and abbreviations (`rewrite_police`)
+    **POLICE,
 }
 
 
@@ -564,6 +567,8 @@ REWRITES["writer_adjuster"] = _chain(
     "lane_curb",
     "stationary",
 )
+# (an agency's export: form labels and abbreviations, all in capitals)
+REWRITES["writer_agency"] = _chain("driver_short", "veh_caps", "compass_abbreviated", "form_abbrev", "all_caps")
 REWRITES["writer_terse"] = _chain("v_dash", "speed_upper", "compass_was", "pronoun_subject", "semicolons", "turn_verb")
 
 
