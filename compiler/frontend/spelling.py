@@ -1,7 +1,8 @@
 """One spelling for what reports write several ways, word for word, so that every reader reads one: a direction
 of travel abbreviated as police forms do ("N/B"), a turn's hand ("a left-hand turn"), British words for the road
-("carriageway", "junction"). Word for word, so that the evidence of a fact read from the respelt text maps back
-to the report's own words (`evidence.Alignment` compares words by their respelling).
+("carriageway", "junction"), police forms' abbreviations ("RT LN", "INTX": `forms`). Word for word, so that the
+evidence of a fact read from the respelt text maps back to the report's own words (`evidence.Alignment` compares
+words by their respelling).
 """
 
 from __future__ import annotations
