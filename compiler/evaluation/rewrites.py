@@ -18,6 +18,7 @@ from collections.abc import Callable
 
 from sovarc.compiler.evaluation import rewrite_clauses as clauses
 from sovarc.compiler.evaluation import rewrite_road as road
+from sovarc.compiler.evaluation import rewrite_roles as roles
 from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
 
@@ -534,6 +535,10 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "lanes_each_way": road.lanes_each_way,
     "lanes_total": road.lanes_total,
     "dark_lighted": road.dark_lighted,
+    # reports that number nobody: road users named by description, by the narrator, by an insurer (`rewrite_roles`)
+    "unnumbered": roles.unnumbered,
+    "first_person": roles.first_person,
+    "insurer": roles.insurer,
 }
 
 
