@@ -23,11 +23,11 @@ _INSURED_VEHICLE_CASED = re.compile(r"\b(?:the )?IV\b(?!-)")  # (an acronym: "iv
 _INSURED_OWN = re.compile(r"\b(?:our|the) insured(?: driver| party)?'s\b", re.I)  # "our insured's phone"
 _INSURED = re.compile(r"\b(?:our|the) insured(?: driver| party)?\b(?![\w-])", re.I)
 
-# The narrator: "I" (not "I-95", a road), "me", "my" and "myself".
+# The narrator: "I" (not "I-95", a road), "me", "my" and "myself" (not in capitals: "ME" is a medical examiner).
 _I = re.compile(r"\bI\b(?![-.]?\d)(?!-)")
-_MY_VEHICLE = re.compile(r"\bmy (?:own )?" + _OWN + r"\b", re.I)
-_MY = re.compile(r"\bmy\b", re.I)
-_ME = re.compile(r"\b(?:me|myself)\b", re.I)
+_MY_VEHICLE = re.compile(r"\b[Mm]y (?:own )?(?i:" + _OWN + r")\b")
+_MY = re.compile(r"\b[Mm]y\b")
+_ME = re.compile(r"\b(?:[Mm]e|[Mm]yself)\b")
 # The other party's vehicle in a first-person account: the narrator says "my car", so "her car" is the other's.
 _THEIR_VEHICLE = re.compile(r"\b(?:his|her|their) " + _OWN + r"\b", re.I)
 

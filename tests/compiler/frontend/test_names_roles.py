@@ -112,3 +112,8 @@ def test_the_evidence_is_quoted_from_the_report_as_written() -> None:
 def test_a_report_with_no_road_user_is_still_refused() -> None:
     with pytest.raises(FrontEndError, match="names no vehicle or pedestrian"):
         read("It was raining. The road was wet. Something happened near the bridge.")
+
+
+def test_me_in_capitals_is_no_narrator() -> None:
+    named, _ = label_parties("I was driving east when a truck hit me. The ME was called.")
+    assert named == "V1 was driving east when V2 hit V1. The ME was called."
