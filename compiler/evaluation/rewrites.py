@@ -18,6 +18,7 @@ from collections.abc import Callable
 
 from sovarc.compiler.evaluation import rewrite_clauses as clauses
 from sovarc.compiler.evaluation import rewrite_road as road
+from sovarc.compiler.evaluation import rewrite_roles as roles
 from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
 from sovarc.compiler.evaluation.rewrite_police import POLICE
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
@@ -537,6 +538,10 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "dark_lighted": road.dark_lighted,
     # a police agency's conventions: capitals, form labels and abbreviations (`rewrite_police`)
     **POLICE,
+    # reports that number nobody: road users named by description, by the narrator, by an insurer (`rewrite_roles`)
+    "unnumbered": roles.unnumbered,
+    "first_person": roles.first_person,
+    "insurer": roles.insurer,
 }
 
 

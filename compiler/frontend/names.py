@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.roles import MAKE, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
@@ -84,10 +85,19 @@ THING = re.compile(
 )
 
 
-def _replace_phrase(text: str, phrase: str, pid: str) -> str:
-    """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id."""
+def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) -> str:
+    """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id; a make with the
+    model and kind said after it ("the Ford Taurus sedan"). `introduced`: not the words of an introduction kept
+    beside the id ("V2, a 1994 Ford Taurus,")."""
+    after = r"(?-i:(?:[- ][A-Z0-9][\w.-]*)*)(?:\s+(?:" + _KINDS + r"))?" if phrase[:1].isupper() else ""
     return re.sub(
-        r"\b(?:an?|the|another|that|this)\s+" + _MODS + re.escape(phrase) + r"\b(?![\w-])" + _NOT_USER,
+        (r"(?<![VP]\d, )" if introduced else "")
+        + r"\b(?:an?|the|another|that|this)\s+"
+        + (_MODS.replace(".", "") if introduced else _MODS)  # (not across a sentence run on: "direction.The")
+        + re.escape(phrase)
+        + after
+        + r"\b(?![\w-])"
+        + _NOT_USER,
         pid,
         text,
         flags=re.I,
@@ -248,26 +258,50 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
         return text, None, {}  # numbered outside any labels: the report's own numbering
     labelled = _labels(text)
     if labelled is not None:
-        if re.search(r"\bV1\b", labelled[0]) or (automated := _automated(labelled[0])) is None:
+        if re.search(r"\bV1\b", labelled[0]):
             return labelled
+        if (automated := _automated(labelled[0])) is None:
+            if (told := narrator(labelled[0])) is None:
+                return labelled
+            # or the narrator's, the insured's: "the minivan (V2) turned in front of me"
+            return told[0], f"{labelled[1]}; the {_teller(told[1])}'s vehicle ('{told[1]}') is V1", labelled[2]
         # It labels the others ("a sedan (Vehicle 2)") but not itself: the automated vehicle is V1.
         note = f"{labelled[1]}; the automated vehicle ('{automated[1]}') is V1"
         return automated[0], note, {**labelled[2], "V1": automated[1]}
     if re.search(r"\b[VP]\d\b", _LABEL.sub(" ", text)):
         # It numbers the others ("rear-ended by Vehicle #2") but not itself: the automated vehicle is V1.
         automated = _automated(text)
+        if automated is None and (told := narrator(text)) is not None:
+            # or the narrator's, the insured's: "V2 turned left in front of me"
+            return told[0], f"participants numbered by rule: the {_teller(told[1])}'s vehicle ('{told[1]}') is V1", {}
         if automated is None:
             return text, None, {}
         note = f"participants numbered by rule: the automated vehicle ('{automated[1]}') is V1"
         return automated[0], note, {"V1": automated[1]}
     automated = _automated(text)
     if automated is None:
-        return text, None, {}
+        return unnumbered(text) or (text, None, {})
     text, said = automated
     others = _others(text)
+    text, named, words_of = _number(text, others, {"V1": said})
+    note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
+    if named:
+        note += "; the other road users in the first impact are " + ", ".join(named)
+    return text, note, words_of
+
+
+_THE_OTHER = "the other"  # the kind of a party the report names only as "the other vehicle" (see `_impact_users`)
+
+
+def _number(
+    text: str, others: list[tuple[str, str]], words_of: dict[str, str], introduced: bool = False
+) -> tuple[str, list[str], dict[str, str]]:
+    """Every mention of each of `others` ((kind or make, words first said)) as its id, numbered after those in
+    `words_of`; with the list of them for the note, and `words_of` with theirs. `introduced`: an introduction
+    with a model year keeps its words beside the id ("V2, a 1994 Ford Taurus,"), as a police report says it."""
     named: list[str] = []
-    counts = {"V": 1, "P": 0}
-    words_of = {"V1": said}
+    counts = {"V": len([p for p in words_of if p[0] == "V"]), "P": len([p for p in words_of if p[0] == "P"])}
+    words_of = dict(words_of)
     for kind, words in others:
         role = "P" if kind in _PEOPLE else "V"
         counts[role] += 1
@@ -277,24 +311,150 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
         # "another SUV" is not the SUV named before it ("stopped behind an SUV that was double parked ... another
         # SUV ... made contact"): only what follows it names this one
         start = text.find(words) if words.lower().startswith("another ") else 0
+        found = re.search(r"\s+".join(map(re.escape, words.split())), text)  # (a report's spacing may differ)
+        if introduced and re.search(r"\b(?:19|20)\d\d\b", words) and found is not None:
+            at, end = found.span()
+            words = found.group()
+            said = words[0].lower() + words[1:] if not words[1:2].isupper() else words
+            if other := re.search(r"\b(?i:the other vehicle), $", text[:at]):  # what "the other vehicle" was
+                at, said = other.start(), f"{pid}, {said}"
+            elif not re.search(r"\b[VP]\d, $", text[:at]):  # (else the report's own apposition)
+                said = f"{pid}, {said}" + ("" if text[end : end + 1] in ",." else ",")
+            text = text[:at] + said + text[end:]
+            start = at  # (what comes before it is not this one)
+        if kind == _THE_OTHER:  # named only as the other one: "the other vehicle", "the other driver"
+            text = _OTHER.sub(pid, text)
+            continue
         head, tail = text[: max(start, 0)], text[max(start, 0) :]
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            tail = _replace_phrase(tail, words_for, pid)
+            tail = _replace_phrase(tail, words_for, pid, introduced)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, kind.split()[-1], pid)  # "the car" for "a passenger car"
+            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced)  # "the car" for "a passenger car"
         text = head + tail
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
             text = _OTHER.sub(pid, text)
-    note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
+    return text, named, words_of
+
+
+_OF_NUMBERED = re.compile(r"\b[VP]\d,? (?:(?:was|is) )?$")
+
+
+def _users_in(sentence: str) -> list[tuple[str, str, int]]:
+    """The road users a sentence names, as (kind or make, words, where), in its order: by kind ("a northbound
+    sedan", "the pickup"), by make ("the Toyota", "a 1998 Ford Taurus"), both ("a Ford pickup": its make)."""
+    found: list[tuple[str, str, int]] = []
+    makes = list(MAKE.finditer(sentence))
+    users = list(_USER.finditer(sentence))
+
+    def overlap(a: re.Match[str], b: re.Match[str]) -> bool:
+        return a.start() <= b.start() < a.end() or b.start() <= a.start() < b.end()
+
+    for k in makes:
+        # with the kind said after it: "a southbound Ford pickup", "a 1998 Ford Taurus station wagon"
+        kind = re.match(r"(?:\s+[a-z][\w-]*)?\s+(?:" + _KINDS + r")\b(?![\w-])", sentence[k.end() :], re.I)
+        end = max([k.end() + (kind.end() if kind else 0), *(m.end() for m in users if overlap(k, m))])
+        found.append((k["make"], sentence[k.start() : end], k.start()))
+    for m in users:
+        if any(overlap(k, m) for k in makes):
+            continue  # a make's kind: the make names it
+        if re.fullmatch(r"the vehicle", m.group(), re.I) or _OTHER.fullmatch(m.group()):
+            continue  # a bare "the vehicle" or "the other vehicle" points back to one named
+        found.append((_head(m), m.group(), m.start()))
+    # (not what a numbered party is said to be: "V1, a 1999 Dodge Caravan,", "V1 was a 1999 Dodge Caravan")
+    return sorted((f for f in found if not _OF_NUMBERED.search(sentence[: f[2]])), key=lambda f: f[2])
+
+
+def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
+    """The road users in the first impact, as (kind or make, words first said), in the order the report first
+    names them (V1 apart when `v1`: then the impact is the first sentence that names it); or, when two of them
+    are named alike ("a Toyota ... another Toyota"), those words."""
+    sents = sentences(text)
+    start = narrative_start(sents)
+    for i in range(start, len(sents)):
+        sentence = sents[i]
+        if (scene := _SCENE_CLAUSE.match(sentence)) and _IMPACT.search(sentence[scene.end() :]):
+            sentence = sentence[scene.end() :]
+        if not _IMPACT.search(sentence) or (v1 and not re.search(r"\b(?:V1|it|them|he|she)\b", sentence)):
+            continue
+        users: list[tuple[str, str]] = []
+        for kind, words, _ in _users_in(sentence):
+            if kind.lower() not in [k.lower() for k, _ in users]:
+                users.append((kind, words))
+        # every mention up to the impact, in order; those that introduce a road user ("a", "another")
+        said = [(j, *u) for j in range(start, i + 1) for u in _users_in(sents[j])]
+        new = [(j, k, w) for j, k, w, _ in said if re.match(r"(?:an?|another|one) ", w, re.I)]
+        if len(users) < (1 if v1 else 2) and (other := _OTHER.search(sentence)):
+            users.append((_THE_OTHER, other.group()))  # "turned in front of the other vehicle"
+        if len(users) < (1 if v1 else 2):
+            # it says one of them by a pronoun or as "the driver": the last road user introduced before it
+            before = [(k, w) for j, k, w in new if j < i and k.lower() not in [u.lower() for u, _ in users]]
+            users = before[-1:] + users
+        for kind, _ in users:
+            if len(alike := [w for _, k, w in new if k.lower() == kind.lower()]) > 1:
+                return alike[1]  # a second of one kind or make: its later mentions cannot be told apart
+        if not users:
+            continue
+        # each by the words that introduced it ("a 1984 Yamaha motorcycle", not "the Yamaha"), in the order the
+        # report first names them
+        order = {k.lower(): n for n, (_, k, _, _) in reversed(list(enumerate(said)))}
+        intro = {k.lower(): w for _, k, w in reversed(new)}
+        users = [(k, intro.get(k.lower(), w)) for k, w in users]
+        return sorted(users, key=lambda u: order.get(u[0].lower(), len(said)))
+    return []
+
+
+def _teller(said: str) -> str:
+    return "insured" if re.search(r"\binsured\b|\bIV\b", said, re.I) else "narrator"
+
+
+def unnumbered(text: str) -> tuple[str, str, dict[str, str]] | None:
+    """The rule for a report that numbers nobody and names no automated vehicle: the narrator's or the insured's
+    vehicle is V1 (`roles.narrator`), else the first road user named that takes part in the first impact; the
+    other road users in the first impact are V2, ... in the order they are named. Road users outside it are
+    bystanders and stay unnamed. None when the first impact names fewer than two road users (or only people)."""
+    if _AUTONOMY.search(text):
+        return None  # a report of an automated vehicle it does not name: that one is V1, and is not known
+    text = partner(text)
+    told = narrator(text)
+    if told is not None:
+        text, said = told
+        users = _impact_users(text, v1=True)
+        rule = f"the {_teller(said)}'s vehicle ('{said}') is V1"
+        first: dict[str, str] = {"V1": said}
+    else:
+        users = _impact_users(text, v1=False)
+        if not users or (isinstance(users, list) and all(k in _PEOPLE for k, _ in users)):
+            return None  # (V1 is a vehicle: a pedestrian struck by one the report does not name is no crash read)
+        rule = ""
+        first = {}
+    if isinstance(users, str):
+        note = f"participants not numbered: two road users are named alike ('{users}')"
+        return text, note, first
+    if not first and len(users) < 2:
+        return None  # a crash of road users is two of them at least: one alone is not what this rule can read
+    text, named, words_of = _number(text, users, first, introduced=True)
+    if not first:
+        rule = f"the first road user named in the first impact ({named[0]}) is V1"
+        named = named[1:]
+    note = f"participants numbered by rule: {rule}"
     if named:
         note += "; the other road users in the first impact are " + ", ".join(named)
+    # the road users introduced and left unnamed: bystanders, no participants ("a parked van", "an unknown vehicle")
+    if bystanders := [w for s in sentences(text) for _, w, _ in _users_in(s) if re.match(r"(?:an?|another) ", w, re.I)]:
+        note += "; not in the crash: " + ", ".join(f"'{w}'" for w in dict.fromkeys(bystanders))
     return text, note, words_of
 
 
 def partner_refusal(named: str, note: str | None) -> str | None:
     """Why a report numbered by rule cannot be read: its automated vehicle hit something the IR has no role
     for ("a pole", "an animal") and no road user; None when it can be. `named` and `note` are what `parties`
-    made of the report."""
+    made of the report. A report naming two road users of its crash alike ("a Toyota ... another Toyota") cannot
+    be read either: which one each later "the Toyota" is, nothing says."""
+    if note is not None and note.startswith("participants not numbered"):
+        return (
+            f"{note.removeprefix('participants not numbered: ')}, so which one each later mention is cannot be "
+            "told; number them (V1, V2, ...) or name them apart"
+        )
     if note is None or not note.startswith("participants numbered by rule") or re.search(r"\b(?:V[2-9]|P\d)\b", named):
         return None
     for sentence in sentences(named):

@@ -245,6 +245,23 @@ CASES = [
         "The driver of V1 was traveling northbound in the left lane. V1 struck V2.",
         "D1 WAS TRAVELING N/B IN THE LT LN. VEH 1 STRUCK VEH 2.",
     ),
+    # reports that number nobody (`rewrite_roles.py`)
+    (
+        "unnumbered",
+        "Vehicle #1, a 2003 Honda Pilot, was traveling east. V2 was a 1998 Ford Taurus traveling west. V2 struck V1.",
+        "A 2003 Honda Pilot was traveling east. A 1998 Ford Taurus was traveling west. The Ford struck the Honda.",
+    ),
+    (
+        "first_person",
+        "V1 was traveling east. The driver of V1 stated that he braked. V2 struck the left side of V1.",
+        "My vehicle was traveling east. I stated that I braked. V2 struck the left side of my vehicle.",
+    ),
+    (
+        "insurer",
+        "V1 was traveling east. The driver of V1 braked. The driver of V2 stated that V2 struck V1.",
+        "The insured vehicle was traveling east. Our insured braked. The claimant stated that the claimant vehicle "
+        "struck the insured vehicle.",
+    ),
 ]
 
 

@@ -89,5 +89,7 @@ def test_a_brand_vehicle_driven_in_manual_mode_is_the_automated_vehicle() -> Non
 
 
 def test_a_brand_vehicle_with_no_word_of_automation_is_not_taken_for_one() -> None:
-    text, _ = label_parties("An Acme vehicle was driven on [XXX] when it struck a parked van.")
-    assert "V1" not in text
+    """It is numbered by the rule for any report that numbers nobody (the first road user in the first impact is
+    V1), not as an automated vehicle."""
+    _, note = label_parties("An Acme vehicle was driven on [XXX] when it struck a parked van.")
+    assert note is not None and "automated" not in note and "first road user" in note
