@@ -36,7 +36,7 @@ from sovarc.compiler.frontend.text import (
     prepare_report,
     sentences,
 )
-from sovarc.compiler.frontend.words import ORDINALS, number, turned
+from sovarc.compiler.frontend.words import ORDINALS, number, opposite, turned
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -212,6 +212,13 @@ _MOVING_HEADING = re.compile(
     re.I,
 )
 _FACING = re.compile(r"(?<!rest )(?<!rest, )\bfacing (?:due |generally )?" + _COMPASS, re.I)
+# Where a road user came from is behind it: "coming from the south" is heading north. Only with a verb of
+# arriving and the point alone ("from the south side", "from the north leg" name a place, not a course).
+_FROM = re.compile(
+    r"\b(?:com(?:ing|es|e)|came|approach\w*|arriv\w*|travel\w*|driv(?:ing|es|e)|drove|proceed\w*) from the "
+    r"(north|south|east|west)(?![\w-])(?! (?:side|leg|end|edge|corner|curb|kerb|shoulder|lanes?|approach)\b)",
+    re.I,
+)
 _LANE_HEADING = re.compile(
     r"\b(?:in|on|within|from) (?:the|its|his|her) (?:\w+ )?(north|south|east|west) ?bound\b", re.I
 )
@@ -228,7 +235,7 @@ _BOUND = re.compile(
 def _heading(pieces: list[Piece], after_impact: bool = False) -> tuple[Heading | Unknown, Piece | None, int]:
     """The heading the pieces state, the surest way of saying it first (see above). After the impact only a
     verb of motion counts: vehicles spin, come to rest facing anywhere and end up in other lanes."""
-    for pattern in (_MOVING_HEADING,) if after_impact else (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING):
+    for pattern in (_MOVING_HEADING,) if after_impact else (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING, _FROM):
         for piece in pieces:
             text = what_was_done(piece.text)
             for m in pattern.finditer(text):
@@ -238,7 +245,8 @@ def _heading(pieces: list[Piece], after_impact: bool = False) -> tuple[Heading |
                     continue
                 if after_impact and re.search(r"\brest\b", text[max(0, m.start() - 20) : m.start()]):
                     continue
-                return Heading(m.group(1).lower()), piece, m.start()
+                said = Heading(m.group(1).lower())
+                return (opposite(said) if pattern is _FROM else said), piece, m.start()
     return UNKNOWN, None, 0
 
 
