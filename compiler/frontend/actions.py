@@ -18,6 +18,7 @@ from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
 from sovarc.compiler.frontend.timing import under_way_first
+from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
@@ -410,6 +411,8 @@ def _found(
                         continue
                     to = Side(side) if side else None
                 if act is ActionKind.GO_ACROSS and not at_junction:
+                    continue
+                if act is ActionKind.RETROGRADE and crossed_in_turn(piece, m.group()):
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()

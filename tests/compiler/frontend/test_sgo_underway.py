@@ -1,0 +1,70 @@
+"""A move under way at the impact (issue 18, sgo7), on sentences written for these tests: a vehicle that came to a
+stop is met by the one said moving as they met, and a centre line crossed in the course of a turn is the turn's."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.dsl.ir import ActionKind, Participant, Scenario
+from sovarc.dsl.span import Source
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
+
+
+def kinds(p: Participant) -> list[ActionKind]:
+    assert isinstance(p.actions, tuple)
+    return [a.kind for a in p.actions]
+
+
+def by_id(s: Scenario, pid: str) -> Participant:
+    return next(p for p in s.participants if p.id == pid)
+
+
+@pytest.mark.parametrize(
+    "impact",
+    [
+        "As the delivery truck turned right, the right side of the truck made contact with the front bumper of "
+        "the Waymo AV.",
+        "While the delivery truck was passing the Waymo AV, the rear side of the truck made contact with the "
+        "front left corner of the Waymo AV.",
+    ],
+)
+def test_one_that_came_to_a_stop_is_met_by_the_one_moving_as_they_met(impact: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a delivery truck on Oak Street. The Waymo AV was "
+        "traveling east on Oak Street and came to a stop at the intersection with Elm Street to yield to a "
+        f"delivery truck. {impact} Both vehicles sustained damage."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+    assert kinds(by_id(s, "V1"))[-1] is ActionKind.STOP
+
+
+def test_one_that_moved_off_again_still_strikes() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a delivery truck on Oak Street. The Waymo AV was "
+        "traveling east on Oak Street and came to a stop at the intersection with Elm Street. The Waymo AV then "
+        "proceeded into the intersection, and as the delivery truck turned right, the front bumper of the Waymo "
+        "AV made contact with the right side of the truck."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V1", "V2")
+
+
+def test_a_centre_line_crossed_in_the_course_of_a_turn_is_the_turn() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a box truck on Oak Street. The Waymo AV was "
+        "traveling south on Oak Street when a box truck was making a left turn from Elm Street onto Oak Street. "
+        "As the box truck turned left, it crossed the center line of Oak Street and the left side of the truck "
+        "made contact with the front of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.TURN_LEFT
+
+
+def test_a_centre_line_crossed_with_no_turn_is_the_wrong_way() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a box truck on Oak Street. The Waymo AV was "
+        "traveling south on Oak Street when a box truck traveling north crossed the center line of Oak Street and "
+        "the front of the truck made contact with the front of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.RETROGRADE
