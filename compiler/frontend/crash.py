@@ -141,6 +141,10 @@ def _names(text: str) -> list[str]:
     return re.findall(r"\b" + _V + r"\b", text)
 
 
+# A part after a preposition of way is where a move went, not a part met: "around the left side of V1".
+_WAY = re.compile(r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", re.I)
+
+
 def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType]]:
     """(where, whose, what part) for every part the sentence ties to a participant."""
     parts: list[tuple[int, str, CrashType]] = []
@@ -157,9 +161,7 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
             ):
                 continue
             # "maneuvered around the left side of V1", "passed along the driver side of V1": the way it went
-            if re.search(
-                r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I
-            ):
+            if _WAY.search(sentence[: m.start()]):
                 continue
             who = m.group("v")
             # "V2 was struck by V1 in the left side": where a passive's agent struck is on the one struck
@@ -251,6 +253,9 @@ def _striker(
 def _subject_like(sentence: str, name: re.Match[str]) -> bool:
     """A name that can be the subject of a strike: not an object ("pass V2"), except as "the front of V2"."""
     owner = re.search(r"(?<!\bin )\b" + _PART + r" of (?:the )?$", sentence[: name.start()], re.I)  # not "in front of"
+    # (not "toward the right side of V1": the part a move heads for or goes around is the way, see `_parts`)
+    if owner is not None and _WAY.search(sentence[: owner.start()]):
+        return False
     return owner is not None or not is_object(sentence, name.start())
 
 

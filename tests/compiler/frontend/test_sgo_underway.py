@@ -1,11 +1,13 @@
 """A move under way at the impact (issue 18, sgo7), on sentences written for these tests: a vehicle that came to a
-stop is met by the one said moving as they met, and a centre line crossed in the course of a turn is the turn's."""
+stop is met by the one said moving as they met, a centre line crossed in the course of a turn is the turn's, and
+the side a move heads for names no subject of the strike."""
 
 from __future__ import annotations
 
 import pytest
 from sovarc.compiler.frontend import FrontEnd
-from sovarc.dsl.ir import ActionKind, Participant, Scenario
+from sovarc.compiler.frontend.crash import read_sentence
+from sovarc.dsl.ir import ActionKind, CrashType, Participant, Scenario
 from sovarc.dsl.span import Source
 
 
@@ -68,3 +70,15 @@ def test_a_centre_line_crossed_with_no_turn_is_the_wrong_way() -> None:
         "the front of the truck made contact with the front of the Waymo AV."
     )
     assert kinds(by_id(s, "V2"))[-1] is ActionKind.RETROGRADE
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "V2 behind V1 began to accelerate toward the right side of V1 and made contact with the rear bumper of V1.",
+        "V2 steered towards the left side of V1 and then made contact with the rear of V1.",
+    ],
+)
+def test_the_side_a_move_heads_for_is_no_subject_of_the_strike(sentence: str) -> None:
+    crash = read_sentence(sentence)
+    assert crash is not None and (crash.striker, crash.victim, crash.type) == ("V2", "V1", CrashType.REAR_END)
