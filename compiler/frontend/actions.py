@@ -25,7 +25,9 @@ from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, 
 _TURN = (
     # (not a head turned to look: "his head was turned left", "with her head turning left")
     r"(?<!\bhead )(?<!\bhead was )(?<!\bheads were )(?<!\bhead is )\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
-    r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
+    # (not a turn approached: "approached a right turn onto Oak Street" names the turn ahead, not yet begun)
+    r"|(?<!approached a )(?<!approaching a )(?<!approaches a )"
+    r"\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "

@@ -82,3 +82,22 @@ def test_a_centre_line_crossed_with_no_turn_is_the_wrong_way() -> None:
 def test_the_side_a_move_heads_for_is_no_subject_of_the_strike(sentence: str) -> None:
     crash = read_sentence(sentence)
     assert crash is not None and (crash.striker, crash.victim, crash.type) == ("V2", "V1", CrashType.REAR_END)
+
+
+@pytest.mark.parametrize("approach", ["approached a right turn onto", "was approaching a left turn onto"])
+def test_a_turn_approached_is_not_yet_made(approach: str) -> None:
+    s = read(
+        f"A Waymo Autonomous Vehicle was in a collision involving an SUV. As the Waymo AV {approach} Oak Street, it "
+        "braked behind stopped traffic. An SUV following behind the Waymo AV made contact with the rear of the "
+        "Waymo AV."
+    )
+    assert kinds(by_id(s, "V1"))[-1] is ActionKind.FOLLOW_LANE
+
+
+def test_a_turn_made_after_the_approach_is_the_turn() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving an SUV. The Waymo AV approached a right turn onto "
+        "Oak Street and then turned right onto Oak Street. An SUV following behind the Waymo AV made contact with "
+        "the rear of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V1"))[-1] is ActionKind.TURN_RIGHT
