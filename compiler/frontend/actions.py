@@ -251,7 +251,9 @@ _STRAIGHT = re.compile(
 )
 # A turn said without its side ("before turning", "began the turn") is the one the driver meant to make.
 _BARE_TURN = re.compile(
-    r"\b(?:turning|turned|began (?:to|its|the) turn|made the turn|making the turn|started (?:to turn|turning))\b"
+    r"\b(?:turning|turned|began (?:to|its|the) turn|made the turn|making the turn|started (?:to turn|turning)"
+    # the turn set going: "began to initiate the turn", "initiated its turn"
+    r"|(?:(?:began|started) to )?(?:initiat|execut|commenc)(?:ed|ing|es|e) (?:the|its) turn)\b"
     r"(?! (?:to the |to its )?(?:left|right|around|green|red))",
     re.I,
 )

@@ -101,3 +101,14 @@ def test_a_turn_made_after_the_approach_is_the_turn() -> None:
         "the rear of the Waymo AV."
     )
     assert kinds(by_id(s, "V1"))[-1] is ActionKind.TURN_RIGHT
+
+
+@pytest.mark.parametrize("begun", ["began to initiate the turn", "initiated its turn", "began to execute the turn"])
+def test_a_meant_turn_set_going_is_the_turn(begun: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan. The Waymo AV was traveling north on Pine "
+        "Street and preparing to make a left turn onto Oak Street. The Waymo AV slowed to yield to oncoming "
+        f"traffic. As the traffic passed and the Waymo AV {begun}, a sedan approached from behind and made contact "
+        "with the rear of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V1"))[-1] is ActionKind.TURN_LEFT
