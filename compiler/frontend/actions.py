@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.clauses import Piece
-from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
+from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
 from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.turnpath import crossed_in_turn
@@ -364,6 +364,7 @@ def what_was_done(text: str) -> str:
         lambda m: m.group() if re.search(r"\b[VP]\d,? (?:an?|the) (?:[\w-]+ )?$", text[: m.start()]) else " ", text
     )
     text = _INTENDED_MOVE.sub(" ", text)
+    text = LANE_USE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)

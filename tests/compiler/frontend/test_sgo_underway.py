@@ -112,3 +112,15 @@ def test_a_meant_turn_set_going_is_the_turn(begun: str) -> None:
         "with the rear of the Waymo AV."
     )
     assert kinds(by_id(s, "V1"))[-1] is ActionKind.TURN_LEFT
+
+
+@pytest.mark.parametrize(
+    "lane", ["a lane designated for both straight through and left turn maneuvers", "the lane for left turns"]
+)
+def test_what_a_lane_is_for_is_no_move(lane: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a pickup truck. The Waymo AV was traveling north "
+        f"on Pine Street in {lane} and drove through the intersection with Oak Street. A pickup truck in the right "
+        "adjacent lane changed lanes to the left and made contact with the front passenger side of the Waymo AV."
+    )
+    assert ActionKind.TURN_LEFT not in kinds(by_id(s, "V1"))
