@@ -124,3 +124,22 @@ def test_what_a_lane_is_for_is_no_move(lane: str) -> None:
         "adjacent lane changed lanes to the left and made contact with the front passenger side of the Waymo AV."
     )
     assert ActionKind.TURN_LEFT not in kinds(by_id(s, "V1"))
+
+
+def test_a_move_continued_after_a_stop_is_resumed() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan. The Waymo AV was traveling west on Pine "
+        "Street when a sedan began to exit from a driveway of a parking lot to the right of the Waymo AV. The sedan "
+        "entered the right lane and stopped. The sedan then continued its trajectory into the left lane, and the "
+        "front of the sedan made contact with the passenger side of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.DRIVE_INTO
+
+
+def test_a_stop_with_nothing_continued_stays_the_last_move() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan. The Waymo AV was traveling west on Pine "
+        "Street when a sedan began to exit from a driveway of a parking lot to the right of the Waymo AV. The sedan "
+        "entered the right lane and stopped. The Waymo AV made contact with the front of the sedan."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.STOP
