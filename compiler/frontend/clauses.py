@@ -62,6 +62,12 @@ _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNOREC
 _CLAUSE_END = re.compile(
     r",? (?:and )?then\b|;|(?:,|,? (?:as|when|while|until|and|so|before|after)) (?=(?:it|he|she)\b)", re.I
 )
+# Another road user as a preposition's object ("yielding for traffic", "stopped behind a truck"): its clause
+# ends where the subject's next verb is brought in by "and".
+_GOVERNED = re.compile(r"\b(?:for|to|behind|from|past|around|of)\s+(?:[\w-]+\s+){0,2}$", re.I)
+_OBJECT_CLAUSE_END = re.compile(
+    _CLAUSE_END.pattern + r"|,? and (?=(?:then )?(?:came|began|went|made|took|[a-z]+ed)\b)", re.I
+)
 # A sentence about the place, not about a participant: "The roadway had ...", "It was dark".
 _SCENE = re.compile(
     r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"
@@ -139,7 +145,10 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
             if aside and (comma := sentence.find(",", at)) >= 0:
                 events.append((comma + 1, next((w for a, w in reversed(events) if a < at and w), carry)))
                 continue
-            if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
+            # (and one that is a preposition's object ends where "and" brings in the subject's next verb:
+            # "began yielding for approaching traffic and came to a stop")
+            ends = _CLAUSE_END if not _GOVERNED.search(sentence[:at]) else _OBJECT_CLAUSE_END
+            if not whom and (end := ends.search(sentence, at)):  # another road user's clause ends here
                 back = next((w for a, w in reversed(events) if a < at and w), carry)
                 events.append((end.end(), back))
         events.sort()

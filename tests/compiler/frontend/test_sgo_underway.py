@@ -143,3 +143,13 @@ def test_a_stop_with_nothing_continued_stays_the_last_move() -> None:
         "entered the right lane and stopped. The Waymo AV made contact with the front of the sedan."
     )
     assert kinds(by_id(s, "V2"))[-1] is ActionKind.STOP
+
+
+@pytest.mark.parametrize("other", ["approaching traffic", "a delivery truck", "the traffic ahead"])
+def test_the_subject_s_verb_after_another_road_user_it_yielded_for(other: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan. The Waymo AV was attempting a right turn "
+        f"from a parking lot onto Pine Street when it began yielding for {other} and came to a stop. A sedan behind "
+        "the Waymo AV then struck the rear of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V1"))[-1] is ActionKind.STOP
