@@ -100,22 +100,45 @@ def is_object(sentence: str, at: int) -> bool:
     return bool(_OBJECT_BEFORE.search(before)) and not _SUBJECT_OF.search(before)
 
 
+# After an object that ends a fronted phrase, ", a passenger car was ..." is the main clause's subject and its
+# verb, not the object described ("In the lane ahead of V1, a passenger car was double parked").
+_MAIN_SUBJECT = re.compile(r",? (?:an?|the) (?:[\w-]+ ){0,3}?(?:was|were|had|is|are)\b")
+
+
+def _fronted_main(sentence: str, at: int) -> bool:
+    """Whether the name ending at `at` ends a fronted phrase and ", a passenger car was" follows: the main
+    clause's subject, not the name described."""
+    return bool(
+        "," not in sentence[:at]
+        and re.match(r"(?:In|On|At|Ahead|Behind|Near|Along)\b", sentence)
+        and _MAIN_SUBJECT.match(sentence, at)
+    )
+
+
 def _events(sentence: str, ids: list[str], others: re.Pattern[str] | None) -> list[tuple[int, tuple[str, ...]]]:
     """Where a piece starts in the sentence, and whose it is; `others` names the road users met before."""
     found: list[tuple[int, tuple[str, ...]]] = []
     for m in _NAME.finditer(sentence):
-        if m.group() in ids and (not is_object(sentence, m.start()) or _ASIDE.match(sentence, m.end())):
+        if m.group() in ids and (
+            not is_object(sentence, m.start())
+            or (_ASIDE.match(sentence, m.end()) and not _fronted_main(sentence, m.end()))
+        ):
             found.append((m.start(), (m.group(),)))
     vehicles = tuple(pid for pid in ids if pid.startswith("V"))
     found += [(m.start(), vehicles) for m in _BOTH.finditer(sentence)]
     # Another road user right after a participant's name is an apposition ("V2, an unknown type van").
     groups = [m.span() for m in _BOTH.finditer(sentence)]
+
+    def apposition(at: int) -> bool:
+        name = re.search(r"\b[VP]\d(?=,? ?$)", sentence[:at])
+        return name is not None and not _fronted_main(sentence, name.end())
+
     found += [
         (m.start(), ())
         for pattern in (_OTHER, others)
         if pattern is not None
         for m in pattern.finditer(sentence)
-        if not re.search(r"\b[VP]\d,? ?$", sentence[: m.start()]) and not any(a <= m.start() < b for a, b in groups)
+        if not apposition(m.start()) and not any(a <= m.start() < b for a, b in groups)
     ]
     return sorted(set(found))
 

@@ -153,3 +153,21 @@ def test_the_subject_s_verb_after_another_road_user_it_yielded_for(other: str) -
         "the Waymo AV then struck the rear of the Waymo AV."
     )
     assert kinds(by_id(s, "V1"))[-1] is ActionKind.STOP
+
+
+def test_the_subject_after_a_fronted_phrase_is_no_aside_of_its_object() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a minivan. The Waymo AV was traveling west on "
+        "Pine Street in the left lane. In the right lane ahead of the Waymo AV, a passenger car was double parked. "
+        "A minivan traveling behind the Waymo AV then changed lanes to the left and the front of the minivan made "
+        "contact with the rear of the Waymo AV."
+    )
+    assert ActionKind.PARKED not in kinds(by_id(s, "V1"))
+
+
+def test_an_object_described_on_the_spot_is_still_an_aside() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan. The Waymo AV struck the sedan, a grey "
+        "Honda that was parked at the curb."
+    )
+    assert kinds(by_id(s, "V2")) == [ActionKind.PARKED]
