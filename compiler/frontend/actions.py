@@ -15,16 +15,20 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.clauses import Piece
-from sovarc.compiler.frontend.lanes import NUMBER, lane_change_side
+from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
+from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
 from sovarc.compiler.frontend.timing import under_way_first
+from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
 _TURN = (
     # (not a head turned to look: "his head was turned left", "with her head turning left")
     r"(?<!\bhead )(?<!\bhead was )(?<!\bheads were )(?<!\bhead is )\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
-    r"|\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
+    # (not a turn approached: "approached a right turn onto Oak Street" names the turn ahead, not yet begun)
+    r"|(?<!approached a )(?<!approaching a )(?<!approaches a )"
+    r"\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
     r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
@@ -248,7 +252,9 @@ _STRAIGHT = re.compile(
 )
 # A turn said without its side ("before turning", "began the turn") is the one the driver meant to make.
 _BARE_TURN = re.compile(
-    r"\b(?:turning|turned|began (?:to|its|the) turn|made the turn|making the turn|started (?:to turn|turning))\b"
+    r"\b(?:turning|turned|began (?:to|its|the) turn|made the turn|making the turn|started (?:to turn|turning)"
+    # the turn set going: "began to initiate the turn", "initiated its turn"
+    r"|(?:(?:began|started) to )?(?:initiat|execut|commenc)(?:ed|ing|es|e) (?:the|its) turn)\b"
     r"(?! (?:to the |to its )?(?:left|right|around|green|red))",
     re.I,
 )
@@ -359,6 +365,7 @@ def what_was_done(text: str) -> str:
         lambda m: m.group() if re.search(r"\b[VP]\d,? (?:an?|the) (?:[\w-]+ )?$", text[: m.start()]) else " ", text
     )
     text = _INTENDED_MOVE.sub(" ", text)
+    text = LANE_USE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
     return _INTENT.sub(intent, text)
@@ -410,6 +417,8 @@ def _found(
                         continue
                     to = Side(side) if side else None
                 if act is ActionKind.GO_ACROSS and not at_junction:
+                    continue
+                if act is ActionKind.RETROGRADE and crossed_in_turn(piece, m.group()):
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
@@ -512,7 +521,7 @@ def read_actions_at(
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
-    found.sort(key=lambda item: item[0])
+    found = resumed(sorted(found, key=lambda item: item[0]), pieces)
     # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see _DRIVING_ON).

@@ -62,6 +62,12 @@ _BOTH = re.compile(r"\b(?:both|the two) (?:vehicles|drivers|cars)\b", re.IGNOREC
 _CLAUSE_END = re.compile(
     r",? (?:and )?then\b|;|(?:,|,? (?:as|when|while|until|and|so|before|after)) (?=(?:it|he|she)\b)", re.I
 )
+# Another road user as a preposition's object ("yielding for traffic", "stopped behind a truck"): its clause
+# ends where the subject's next verb is brought in by "and".
+_GOVERNED = re.compile(r"\b(?:for|to|behind|from|past|around|of)\s+(?:[\w-]+\s+){0,2}$", re.I)
+_OBJECT_CLAUSE_END = re.compile(
+    _CLAUSE_END.pattern + r"|,? and (?=(?:then )?(?:came|began|went|made|took|[a-z]+ed)\b)", re.I
+)
 # A sentence about the place, not about a participant: "The roadway had ...", "It was dark".
 _SCENE = re.compile(
     r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"
@@ -94,22 +100,45 @@ def is_object(sentence: str, at: int) -> bool:
     return bool(_OBJECT_BEFORE.search(before)) and not _SUBJECT_OF.search(before)
 
 
+# After an object that ends a fronted phrase, ", a passenger car was ..." is the main clause's subject and its
+# verb, not the object described ("In the lane ahead of V1, a passenger car was double parked").
+_MAIN_SUBJECT = re.compile(r",? (?:an?|the) (?:[\w-]+ ){0,3}?(?:was|were|had|is|are)\b")
+
+
+def _fronted_main(sentence: str, at: int) -> bool:
+    """Whether the name ending at `at` ends a fronted phrase and ", a passenger car was" follows: the main
+    clause's subject, not the name described."""
+    return bool(
+        "," not in sentence[:at]
+        and re.match(r"(?:In|On|At|Ahead|Behind|Near|Along)\b", sentence)
+        and _MAIN_SUBJECT.match(sentence, at)
+    )
+
+
 def _events(sentence: str, ids: list[str], others: re.Pattern[str] | None) -> list[tuple[int, tuple[str, ...]]]:
     """Where a piece starts in the sentence, and whose it is; `others` names the road users met before."""
     found: list[tuple[int, tuple[str, ...]]] = []
     for m in _NAME.finditer(sentence):
-        if m.group() in ids and (not is_object(sentence, m.start()) or _ASIDE.match(sentence, m.end())):
+        if m.group() in ids and (
+            not is_object(sentence, m.start())
+            or (_ASIDE.match(sentence, m.end()) and not _fronted_main(sentence, m.end()))
+        ):
             found.append((m.start(), (m.group(),)))
     vehicles = tuple(pid for pid in ids if pid.startswith("V"))
     found += [(m.start(), vehicles) for m in _BOTH.finditer(sentence)]
     # Another road user right after a participant's name is an apposition ("V2, an unknown type van").
     groups = [m.span() for m in _BOTH.finditer(sentence)]
+
+    def apposition(at: int) -> bool:
+        name = re.search(r"\b[VP]\d(?=,? ?$)", sentence[:at])
+        return name is not None and not _fronted_main(sentence, name.end())
+
     found += [
         (m.start(), ())
         for pattern in (_OTHER, others)
         if pattern is not None
         for m in pattern.finditer(sentence)
-        if not re.search(r"\b[VP]\d,? ?$", sentence[: m.start()]) and not any(a <= m.start() < b for a, b in groups)
+        if not apposition(m.start()) and not any(a <= m.start() < b for a, b in groups)
     ]
     return sorted(set(found))
 
@@ -139,7 +168,10 @@ def pieces(sents: list[str], ids: list[str]) -> list[Piece]:
             if aside and (comma := sentence.find(",", at)) >= 0:
                 events.append((comma + 1, next((w for a, w in reversed(events) if a < at and w), carry)))
                 continue
-            if not whom and (end := _CLAUSE_END.search(sentence, at)):  # another road user's clause ends here
+            # (and one that is a preposition's object ends where "and" brings in the subject's next verb:
+            # "began yielding for approaching traffic and came to a stop")
+            ends = _CLAUSE_END if not _GOVERNED.search(sentence[:at]) else _OBJECT_CLAUSE_END
+            if not whom and (end := ends.search(sentence, at)):  # another road user's clause ends here
                 back = next((w for a, w in reversed(events) if a < at and w), carry)
                 events.append((end.end(), back))
         events.sort()

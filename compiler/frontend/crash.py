@@ -31,9 +31,11 @@ MOVED_INTO = (
     r"(?= (?:the |its |his |her )?(?:(?:stationary|stopped|parked) )?[VP]\d\b(?!'s (?:lane|path))"
     r"| (?:the |its |his |her |[VP]\d's )?" + _PART + r"\b(?! (?:lane|path)))"
 )
+# A glancing blow is a strike too: "sideswiped", "clipped", "grazed", "brushed against", "scraped".
+_GLANCING = r"side-?swip(?:ed|ing|es)|clipp(?:ed|ing)|graz(?:ed|ing)|(?:brush|scrap)(?:ed|ing)(?: against)?"
 _STRIKE = (
     r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?|" + MOVED_INTO + ")"
+    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?|" + _GLANCING + "|" + MOVED_INTO + ")"
 )
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
@@ -62,16 +64,25 @@ _OWN_PART = re.compile(
     r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
     re.I,
 )
-_OBJECT_ITS = re.compile(r"\b(?:contact|collided|collision) with (?:its|his|her|it's) (?P<part>" + _PART + r")\b", re.I)
+# "its" after a contact, after a strike's participle ("struck V1, striking its rear bumper"), or after a strike's
+# object ("struck V1 at its rear bumper") is the object's
+# (not "contacting it's front to the left side of V2": a part the subject puts to the other is its own)
+_OBJECT_ITS = re.compile(
+    r"\b(?:(?:contact|collided|collision) with|striking|hitting|impacting"
+    r"|(?:struck|hit|impacted|contacted|striking|hitting) (?:the )?" + _V + r",? (?:at|in|on))"
+    r" (?:its|his|her|it's) (?P<part>" + _PART + r")\b(?![- ]" + _WORD + r"\b)(?! (?:to|into|against|with)\b)",
+    re.I,
+)
+# the participles of a passive strike
+_STRUCK = r"(?:struck|hit|impacted|contacted|rear-ended|side-?swiped|clipped|grazed|brushed|scraped)"
 _AGENT = re.compile(
-    r"\b(?:struck|hit|impacted|contacted|rear-ended)\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
+    r"\b" + _STRUCK + r"\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
     r"(?P<v>" + _V + r")\b",
     re.I,
 )
 _AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
-_STRUCK = r"(?:struck|hit|impacted|contacted|rear-ended)"  # the participles of a passive strike
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?" + _STRUCK + r"\b", re.I)
 _PATIENT = re.compile(r"\b(?P<v>" + _V + r")\b (?:was|were) (?:\w+ )?" + _STRUCK + r" by [^.;,]*$", re.I)
 _REAR_ENDED = re.compile(r"\b(?P<a>" + _V + r") rear-ended (?:the )?" + _STATE + r"(?P<b>" + _V + r")\b", re.I)
@@ -80,7 +91,10 @@ _HEAD_ON = re.compile(r"\bhead[- ]on\b", re.I)
 # The striker came from behind the victim: "from behind", "from the rear", "V2 behind V1", "V2 traveling directly
 # behind": one that meets another it follows meets its rear, whatever part of it the report names ("the bumper").
 _FROM_BEHIND = re.compile(r"\bfrom (?:behind|the rear)\b", re.I)
-_FOLLOWER = r"\b{},? (?:(?:that|which) (?:was|had been) )?(?:\w+ing )?(?:directly |right |immediately )?behind\b"
+_FOLLOWER = (
+    r"\b{},? (?:(?:that|which) )?(?:(?:was|were|had been) )?(?:\w+ing )?(?:directly |right |immediately |closely )?"
+    r"behind\b"
+)
 # Failing to avoid a contact states it ("was unable to avoid contact with V2", "could not avoid striking V2");
 # only avoiding it denies it, which `text` reads as no impact.
 _NOT_AVOIDED = re.compile(
@@ -141,6 +155,10 @@ def _names(text: str) -> list[str]:
     return re.findall(r"\b" + _V + r"\b", text)
 
 
+# A part after a preposition of way is where a move went, not a part met: "around the left side of V1".
+_WAY = re.compile(r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", re.I)
+
+
 def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType]]:
     """(where, whose, what part) for every part the sentence ties to a participant."""
     parts: list[tuple[int, str, CrashType]] = []
@@ -157,9 +175,7 @@ def _parts(sentence: str, subject: str | None) -> list[tuple[int, str, CrashType
             ):
                 continue
             # "maneuvered around the left side of V1", "passed along the driver side of V1": the way it went
-            if re.search(
-                r"\b(?:around|past|along|alongside|beside|toward|towards) (?:the )?$", sentence[: m.start()], re.I
-            ):
+            if _WAY.search(sentence[: m.start()]):
                 continue
             who = m.group("v")
             # "V2 was struck by V1 in the left side": where a passive's agent struck is on the one struck
@@ -251,6 +267,9 @@ def _striker(
 def _subject_like(sentence: str, name: re.Match[str]) -> bool:
     """A name that can be the subject of a strike: not an object ("pass V2"), except as "the front of V2"."""
     owner = re.search(r"(?<!\bin )\b" + _PART + r" of (?:the )?$", sentence[: name.start()], re.I)  # not "in front of"
+    # (not "toward the right side of V1": the part a move heads for or goes around is the way, see `_parts`)
+    if owner is not None and _WAY.search(sentence[: owner.start()]):
+        return False
     return owner is not None or not is_object(sentence, name.start())
 
 
@@ -332,6 +351,8 @@ def read_sentence(
         kind = CrashType.SIDE
     if kind is None and re.search(r"\brear-end(?:ed|ing|s)?\b", sentence, re.I):  # "before rear-ending V1"
         kind = CrashType.REAR_END
+    if kind is None and re.search(r"\bside-?swip", sentence, re.I):  # a sideswipe is side against side
+        kind = CrashType.SIDE
     return Crash(kind, striker, victim) if kind is not None else Crash(striker=striker, victim=victim)
 
 

@@ -132,3 +132,11 @@ def lane_change_side(text: str, start: int, end: int, said_before: str) -> str |
         return "left"
     origins = [m.group(1).lower() for m in _ORIGIN.finditer(said_before + " " + window)]
     return _OTHER_SIDE[origins[-1]] if origins else _numbered_side(window, said_before)
+
+
+# What a lane is for is no move: "from a lane designated for both straight through and left turn maneuvers".
+LANE_USE = re.compile(
+    r"(?:(?<=\blane )|(?<=\blanes ))(?:designated |marked |reserved |used |signed )?for (?:both )?[^.,;]{0,40}?"
+    r"\bturn(?:s|ing)?(?: maneuvers?| movements?)?\b",
+    re.I,
+)

@@ -185,11 +185,14 @@ def _said_again(text: str, said: str, numbers: list[str]) -> str:
     return text
 
 
-# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle"; a cyclist is later
-# "the bicycle" it rides (the IR holds the rider and the bicycle as one vehicle).
+# Kinds said two ways of one road user: "a passenger car" is later "the passenger vehicle", "a pickup truck" "the
+# pickup"; a cyclist is later "the bicycle" it rides, a motorcycle "the motorcyclist" who rides it (the IR holds
+# the rider and what they ride as one vehicle).
 _SAME = {
     "passenger vehicle": "passenger car",
     "pick-up truck": "pickup truck",
+    "pickup": "pickup truck",
+    "motorcyclist": "motorcycle",
     "sport utility vehicle": "suv",
     "bicycle": "cyclist",
     "bicyclist": "cyclist",

@@ -25,7 +25,7 @@ from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.precrash import precrash_wrong_way
 from sovarc.compiler.frontend.situation import wrong_side
-from sovarc.compiler.frontend.standing import introduced_doing, standing_struck, still_at_impact
+from sovarc.compiler.frontend.standing import introduced_doing, moving_met_standing, standing_struck, still_at_impact
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -447,6 +447,9 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         parts = pieces(sents, ids)
         mine = by_participant(parts, ids)
     wrong_way = precrash_wrong_way(sents)
+    if impact >= 0 and isinstance(crash.striker, str) and crash.striker in mine:
+        stood = [p for p in mine[crash.striker] if p.sentence <= impact]
+        crash = moving_met_standing(crash, sents[impact], read_actions_at(stood, kind, UNKNOWN, False)[0])
     clauses: dict[str, list[Piece]] = {}
     people = []
     parked: set[str] = set()

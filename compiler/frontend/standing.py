@@ -64,6 +64,32 @@ def standing_struck(people: list[Participant], crash: Crash, sentence: str) -> C
     return replace(crash, striker=victim, victim=striker)
 
 
+# A move under way, said in a clause of time: "as V2 turned left", "while V2 was passing V1", "as V2 passed by".
+_MOVE = (
+    r"(?:pass|turn|overt[ao]k|mov|drov|driv|went|go|proceed|travel|pull|revers|back|merg|chang|maneuver|manoeuvr"
+    r"|cross|continu|approach|accelerat|swerv|veer|enter|exit|leav|navigat|made a (?:left|right|u-)|making a)\w*"
+)
+
+
+def moving_met_standing(crash: Crash, sentence: str, own: tuple[Action, ...] | Unknown) -> Crash:
+    """A vehicle that came to a stop and is not said to move off again stood at the impact when the impact
+    sentence tells the other's move under way then ("As V2 turned left, ... the left side of V2 made contact
+    with the front corner of V1", "and as V2 passed by V1, ..."): the one moving met the one standing, whichever
+    of its parts the sentence names first. `own` are the named striker's actions read as if it struck nobody
+    (the crash readers take a named front for the striking face, and a striker that had stopped is given a
+    crossing: it moved off again). Read before the actions, so the crossing is not given."""
+    striker, victim = crash.striker, crash.victim
+    if not isinstance(striker, str) or not isinstance(victim, str) or isinstance(own, Unknown) or not own:
+        return crash
+    if own[-1].kind not in (ActionKind.STOP, ActionKind.PARKED):
+        return crash
+    if agent_named(sentence) or _front_strikes(sentence, striker):
+        return crash
+    if not re.search(rf"\b(?:as|while) {victim} (?:was |were )?(?:\w+ly )?{_MOVE}\b", sentence, re.I):
+        return crash
+    return replace(crash, striker=victim, victim=striker)
+
+
 def _front_strikes(sentence: str, pid: str) -> bool:
     """Whether the sentence makes the participant's front the subject of the strike."""
     return bool(
