@@ -28,6 +28,9 @@ _KINDS = (
     r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
 )
 _PEOPLE = frozenset(("pedestrian",))
+_PEDESTRIAN = re.compile(r"\bpedestrian\b", re.I)
+# Words introducing a road user that say something of it: its model year, its course ("a westbound SUV").
+_DESCRIBED = re.compile(r"\b(?:19|20)\d\d\b|\b(?:north|south|east|west) ?bound\b", re.I)
 # A kind's noun that modifies another names a place or a thing, not a road user: "the bike lane", "a bus stop".
 _NOT_USER = r"(?! (?:lanes?|paths?|routes?|stops?|shelters?|stations?|racks?|wash|park|parking|share|corrals?)\b)"
 _USER = re.compile(r"\b(?:an?|the|another|one)\s+" + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER, re.I)
@@ -301,7 +304,8 @@ def _number(
 ) -> tuple[str, list[str], dict[str, str]]:
     """Every mention of each of `others` ((kind or make, words first said)) as its id, numbered after those in
     `words_of`; with the list of them for the note, and `words_of` with theirs. `introduced`: an introduction
-    with a model year keeps its words beside the id ("V2, a 1994 Ford Taurus,"), as a police report says it."""
+    with a model year or a course keeps its words beside the id ("V2, a 1994 Ford Taurus,", "V1, a westbound SUV,"),
+    as a police report says it, so that what they say is still said of it."""
     named: list[str] = []
     counts = {"V": len([p for p in words_of if p[0] == "V"]), "P": len([p for p in words_of if p[0] == "P"])}
     words_of = dict(words_of)
@@ -315,7 +319,7 @@ def _number(
         # SUV ... made contact"): only what follows it names this one
         start = text.find(words) if words.lower().startswith("another ") else 0
         found = re.search(r"\s+".join(map(re.escape, words.split())), text)  # (a report's spacing may differ)
-        if introduced and re.search(r"\b(?:19|20)\d\d\b", words) and found is not None:
+        if introduced and _DESCRIBED.search(words) and found is not None:
             at, end = found.span()
             words = found.group()
             said = words[0].lower() + words[1:] if not words[1:2].isupper() else words
@@ -433,8 +437,11 @@ def unnumbered(text: str) -> tuple[str, str, dict[str, str]] | None:
     if isinstance(users, str):
         note = f"participants not numbered: two road users are named alike ('{users}')"
         return text, note, first
-    if not first and len(users) < 2:
-        return None  # a crash of road users is two of them at least: one alone is not what this rule can read
+    if not first and len(users) < 2 and not (users and users[0][0] not in _PEOPLE and _PEDESTRIAN.search(text)):
+        # a crash of road users is two of them at least: one alone is not what this rule can read, unless the other
+        # is a pedestrian, whom the report calls so and who is numbered as pedestrians are ("Pedestrian was
+        # crossing ... when a westbound SUV turning left struck her": the one vehicle is V1)
+        return None
     text, named, words_of = _number(text, users, first, introduced=True)
     if not first:
         rule = f"the first road user named in the first impact ({named[0]}) is V1"

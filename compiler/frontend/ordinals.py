@@ -7,15 +7,21 @@ import re
 
 from sovarc.compiler.frontend.words import ORDINALS
 
-_NAMED = re.compile(r"\b(?:the )?(first|second|third|fourth|fifth) vehicle\b(?![\w-])", re.I)
+# (by whatever noun the report calls its vehicles: "the first car", "the second truck")
+_NOUN = r"(?:vehicle|car|truck|van|pickup|suv|motorist|unit)"
+_NAMED = re.compile(r"\b(?:the )?(first|second|third|fourth|fifth) " + _NOUN + r"\b(?![\w-])", re.I)
 _NUMBERED = re.compile(r"\b[VP]\d\b")
 # An ordinal said as a name opens a sentence or a clause somewhere ("The first vehicle was traveling north", "...,
 # and the second vehicle turned left"), as the reports' numbers do.
-_AS_SUBJECT = re.compile(r"(?:^|[.!?;]\s*|,? (?:and|when|while|as|then) )[Tt]he (?:first|second) vehicle\b")
+_AS_SUBJECT = re.compile(
+    r"(?:^|[.!?;]\s*|,? (?:and|when|while|as|then) )[Tt]he (?:first|second) " + _NOUN + r"\b", re.I
+)
 # One placed by where it stood or by the order it was met in is no name: "the first vehicle to the right", "the
 # first vehicle in line", "the second vehicle ahead".
 _PLACED = re.compile(
-    r"\b(?:first|second|third|fourth|fifth) vehicle (?:to the|in line|in the (?:queue|line)|ahead|behind|in front)\b",
+    r"\b(?:first|second|third|fourth|fifth) "
+    + _NOUN
+    + r" (?:to the|in line|in the (?:queue|line)|ahead|behind|in front)\b",
     re.I,
 )
 

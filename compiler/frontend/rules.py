@@ -21,6 +21,7 @@ from sovarc.compiler.frontend.crash import backed_into_follower, read_crash, rea
 from sovarc.compiler.frontend.damage import damaged_part
 from sovarc.compiler.frontend.doors import door_met
 from sovarc.compiler.frontend.evidence import Locator, keep_stated
+from sovarc.compiler.frontend.headings import heading_before_turn, read_heading
 from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.precrash import precrash_wrong_way
@@ -36,7 +37,7 @@ from sovarc.compiler.frontend.text import (
     prepare_report,
     sentences,
 )
-from sovarc.compiler.frontend.words import ORDINALS, number, opposite, turned
+from sovarc.compiler.frontend.words import ORDINALS, number
 from sovarc.dsl.ir import (
     UNKNOWN,
     Action,
@@ -198,74 +199,6 @@ def read_road_kind(text: str) -> tuple[RoadKind, tuple[int, int] | None]:
 
 def extract_road_kind(text: str) -> RoadKind:
     return read_road_kind(text)[0]
-
-
-# A heading said with a verb of motion ("traveling west", "was eastbound") is the vehicle's own; a lane's
-# direction ("in the westbound lane") is where it was; "to travel westbound", "a westbound left turn",
-# "onto a northbound road", "two westbound and two eastbound lanes" and "facing east at rest" are not its heading.
-# "northwest" counts as north, as the ground truth reads it
-_COMPASS = r"(north|south|east|west)(?:east|west)?(?: ?bound|ward|erly)?(?![a-z/-])"
-_MOVING_HEADING = re.compile(
-    r"\b(?:travel\w*|driv(?:ing|es|e)|drove|head(?:ed|ing)|going|proceed\w*|moving|was|were|continu\w*|approach\w*"
-    r"|walk\w*|runn\w*|jogg\w*|rid(?:ing|e)"
-    r"|negotiat\w*|stopped facing|(?:was|were) (?:\w+ )?facing)(?: due| in an?| generally)? " + _COMPASS,
-    re.I,
-)
-_FACING = re.compile(r"(?<!rest )(?<!rest, )\bfacing (?:due |generally )?" + _COMPASS, re.I)
-# Where a road user came from is behind it: "coming from the south" is heading north. Only with a verb of
-# arriving and the point alone ("from the south side", "from the north leg" name a place, not a course).
-_FROM = re.compile(
-    r"\b(?:com(?:ing|es|e)|came|approach\w*|arriv\w*|travel\w*|driv(?:ing|es|e)|drove|proceed\w*) from the "
-    r"(north|south|east|west)(?![\w-])(?! (?:side|leg|end|edge|corner|curb|kerb|shoulder|lanes?|approach)\b)",
-    re.I,
-)
-_LANE_HEADING = re.compile(
-    r"\b(?:in|on|within|from) (?:the|its|his|her) (?:\w+ )?(north|south|east|west) ?bound\b", re.I
-)
-_NOT_HEADING = re.compile(
-    r"\b(?:to (?:travel|go|head|proceed|turn)|onto|into|toward|towards)\b[^.,;]*?$"
-    r"|\b(?:\d|one|two|three|four|five|both) $",
-    re.I,
-)
-_BOUND = re.compile(
-    r"\b(north|south|east|west) ?bound\b(?! (?:and|or|/)\b)(?!(?: \w+)? (?:left|right|u)[- ]?turn)", re.I
-)
-
-
-def _heading(pieces: list[Piece], after_impact: bool = False) -> tuple[Heading | Unknown, Piece | None, int]:
-    """The heading the pieces state, the surest way of saying it first (see above). After the impact only a
-    verb of motion counts: vehicles spin, come to rest facing anywhere and end up in other lanes."""
-    for pattern in (_MOVING_HEADING,) if after_impact else (_MOVING_HEADING, _LANE_HEADING, _BOUND, _FACING, _FROM):
-        for piece in pieces:
-            text = what_was_done(piece.text)
-            for m in pattern.finditer(text):
-                if pattern is _BOUND and _NOT_HEADING.search(text[: m.start()]):
-                    continue
-                if re.search(r"\bto $", text[: m.start()]):  # "to travel westbound" is where it was going
-                    continue
-                if after_impact and re.search(r"\brest\b", text[max(0, m.start() - 20) : m.start()]):
-                    continue
-                said = Heading(m.group(1).lower())
-                return (opposite(said) if pattern is _FROM else said), piece, m.start()
-    return UNKNOWN, None, 0
-
-
-# A turn said with where it led ("making a left turn to travel east"): a left turn ends a quarter turn
-# anticlockwise of where the vehicle was heading, a right turn clockwise; so it was heading the other way round.
-_TURN_TO = re.compile(
-    r"\b(?:(left|right)[- ]turn|turn(?:ed|ing|s)? (left|right))\b[^.;]{0,30}?\bto (?:travel|go|head|proceed)"
-    r"(?: \w+)? " + _COMPASS,
-    re.I,
-)
-
-
-def _heading_before_turn(pieces: list[Piece]) -> tuple[Heading | Unknown, Piece | None, int]:
-    """The heading before a turn said with the way it led (see above), when no heading is said outright."""
-    for piece in pieces:
-        if m := _TURN_TO.search(what_was_done(piece.text)):
-            after = Heading(m.group(3).lower())
-            return turned(after, 1 if (m.group(1) or m.group(2)).lower() == "left" else -1), piece, m.start()
-    return UNKNOWN, None, 0
 
 
 def _lane(text: str, lanes: int | Unknown, each_way: int | Unknown) -> int | Unknown:
@@ -458,9 +391,10 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         early = [p for p in mine[pid] if impact < 0 or p.sentence <= impact]
         late = [p for p in mine[pid] if p not in early]
         clauses[pid] = early
-        heading, said, at = _heading(early)
-        heading, said, at = _heading(late, after_impact=True) if isinstance(heading, Unknown) else (heading, said, at)
-        heading, said, at = _heading_before_turn(early) if isinstance(heading, Unknown) else (heading, said, at)
+        heading, said, at = read_heading(early)
+        if isinstance(heading, Unknown):
+            heading, said, at = read_heading(late, after_impact=True)
+        heading, said, at = heading_before_turn(early) if isinstance(heading, Unknown) else (heading, said, at)
         each_way = per_direction(" ".join(p.text for p in early), named, lanes, kind is RoadKind.STRAIGHT)
         lane, where = _lane_of(early, lanes, each_way)
         lane, where = _lane_of(late, lanes, each_way) if isinstance(lane, Unknown) else (lane, where)

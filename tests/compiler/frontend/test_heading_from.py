@@ -33,3 +33,12 @@ def test_a_heading_said_outright_comes_first() -> None:
     text = "V2 was traveling north, coming from the south side street, and struck V1, which was traveling east."
     v2 = extract(text, "t").participant("V2")
     assert v2 is not None and v2.heading is Heading.NORTH
+
+
+@pytest.mark.parametrize(
+    ("said", "heading"),
+    [("crossing from south to north", Heading.NORTH), ("walking from the east side to the west", Heading.WEST)],
+)
+def test_a_course_said_by_its_two_ends_heads_to_the_second(said: str, heading: Heading) -> None:
+    p1 = extract(f"P1 was {said} when V1, traveling south, struck P1.", "t").participant("P1")
+    assert p1 is not None and p1.heading is heading

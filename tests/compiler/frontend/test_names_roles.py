@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 from sovarc.compiler.frontend import FrontEnd, FrontEndError
 from sovarc.compiler.frontend.names import label_parties
+from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.dsl.explain import check_evidence
 from sovarc.dsl.ir import ActionKind, CrashType, VehicleKind
 from sovarc.dsl.span import Source
@@ -62,7 +63,9 @@ def test_the_first_road_user_in_the_first_impact_is_v1_and_later_mentions_are_it
         "southbound Ford pickup head-on. The Ford came to rest in a ditch."
     )
     named, note = label_parties(text)
-    assert named.startswith("V1 was northbound") and "struck V2 head-on." in named and "V2 came to rest" in named
+    # (the introduction's course stays beside the number, said of V2)
+    assert named.startswith("V1 was northbound") and "struck V2, a southbound Ford pickup, head-on." in named
+    assert "V2 came to rest" in named
     assert note is not None and "V2 'a southbound Ford pickup'" in note
     scenario = read(text).scenario
     assert vehicle(scenario, "V2").kind is VehicleKind.PICKUP
@@ -117,3 +120,38 @@ def test_a_report_with_no_road_user_is_still_refused() -> None:
 def test_me_in_capitals_is_no_narrator() -> None:
     named, _ = label_parties("I was driving east when a truck hit me. The ME was called.")
     assert named == "V1 was driving east when V2 hit V1. The ME was called."
+
+
+def test_a_pedestrian_struck_by_the_one_vehicle_the_report_does_not_number() -> None:
+    scenario = read(
+        "Pedestrian was crossing Main Street in the crosswalk from south to north when a westbound SUV turning left "
+        "struck her. It was dusk."
+    ).scenario
+    assert [p.id for p in scenario.participants] == ["V1", "P1"]
+    assert (scenario.crash.striker, scenario.crash.victim) == ("V1", "P1")
+    assert str(vehicle(scenario, "V1").heading) == "west"  # "a westbound SUV": its course stays said of it
+    assert str(vehicle(scenario, "P1").heading) == "north"  # "from south to north"
+
+
+def test_a_course_in_an_introduction_is_said_of_the_one_it_introduces() -> None:
+    scenario = read(
+        "The Toyota was northbound on Highway 1 when the driver lost control, crossed the center line and struck "
+        "a southbound Ford pickup head-on."
+    ).scenario
+    assert [str(vehicle(scenario, pid).heading) for pid in ("V1", "V2")] == ["north", "south"]
+    assert scenario.crash.type is CrashType.FRONTAL
+
+
+@pytest.mark.parametrize("noun", ["car", "truck", "vehicle"])
+def test_vehicles_named_by_ordinal_with_any_noun(noun: str) -> None:
+    scenario = read(
+        f"The first {noun} was stopped at the red light facing west. The second {noun}, also westbound, failed to "
+        f"stop and hit the back of the first {noun}."
+    ).scenario
+    crash = scenario.crash
+    assert (crash.type, crash.striker, crash.victim) == (CrashType.REAR_END, "V2", "V1")
+
+
+def test_a_car_placed_by_its_order_in_a_queue_is_not_named_by_the_ordinal() -> None:
+    text = "A van struck the first car in line and then the second car in line."
+    assert ordinal_names(text) == text
