@@ -157,6 +157,10 @@ def _lower_rotated(
                 continue
             contact, solution = item
             relaxed = ["no natural-looking timing fits: speeds or waits are at the edge of what the facts allow"]
+            corner = "past a corner its body swings over a lane line in"
+            held = [
+                f"{pid} starts at least {routes[pid].start_lo:.0f} m along its route, {corner}" for pid in solution.held
+            ]
             yield Lowered(
                 scenario,
                 match,
@@ -167,7 +171,7 @@ def _lower_rotated(
                 crash.type,
                 crash.striker,
                 crash.victim,
-                tuple(notes + extra + (relaxed if solution.relaxed else [])),
+                tuple(notes + extra + held + (relaxed if solution.relaxed else [])),
             )
 
 

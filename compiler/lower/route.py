@@ -85,6 +85,9 @@ class Route:
     lanes: tuple[str, ...]
     edges: tuple[str, ...]
     start_hi: float  # latest place to start (when it starts moving); it may start anywhere from 0
+    # where it starts at the earliest, past a corner its body would cross a line in (corners.py);
+    # the solver holds a start to it only when its own choice lies before it (solve.py)
+    start_lo: float = 0.0
     starts_at_rest: bool = False  # its first action is a stop (or it waits in a driveway)
     notes: list[str] = field(default_factory=list)
     caps: np.ndarray | None = None  # arc lengths and speed caps (m/s) along the smoothed line

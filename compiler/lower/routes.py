@@ -19,6 +19,7 @@ from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.backing import backing_route, is_backing
+from sovarc.compiler.lower.corners import clear_start
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
 from sovarc.compiler.lower.swing import Approach, keep_in_lane
@@ -113,6 +114,9 @@ def vehicle_route(
     manoeuvres = tuple(m.carried(carry) for m in drive.manoeuvres)
     events += [Event(m.index, ActionKind.U_TURN, s, s, gear_stop=True) for m in manoeuvres for s in m.stops]
     drive.lanes.update(lanes_touched(line, match))
+    start_hi = carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0
+    moving = not (starts_at_rest or drive.start_off_road)
+    kerb = any(a.kind in (ActionKind.DRIVE_INTO, ActionKind.DRIVE_OFF) for a in actions)  # crosses the sidewalk
     return Route(
         participant=p,
         body=body,
@@ -120,7 +124,8 @@ def vehicle_route(
         events=events,
         lanes=tuple(sorted(drive.lanes)),
         edges=tuple(drive.edges),
-        start_hi=carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0,
+        start_hi=start_hi,
+        start_lo=clear_start(line, drive.lanes, road_map.net, body, start_hi, kerb=kerb) if moving else 0.0,
         starts_at_rest=starts_at_rest or drive.start_off_road,
         notes=[f"{p.id} {n}" for n in drive.notes],
         manoeuvres=manoeuvres,

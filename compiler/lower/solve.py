@@ -30,7 +30,7 @@ from __future__ import annotations
 import itertools
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Any
 
@@ -133,6 +133,7 @@ class Solution:
     initial_dwell: dict[str, float]
     starts: dict[str, float]
     relaxed: bool  # the natural-looking pass failed; only hard facts hold
+    held: tuple[str, ...] = ()  # participants whose start was held past a corner (Route.start_lo)
 
 
 class ConflictError(Exception):
@@ -153,9 +154,28 @@ class Problem:
     preferred: dict[str, float]  # participant -> preferred cruise speed
     facts: dict[str, Fact]  # by label
     stationary: set[str] = field(default_factory=set)  # participants stopped throughout
+    held: tuple[str, ...] = ()  # participants whose start is held to their route's start_lo
 
 
 def solve(problem: Problem) -> Solution:
+    """The problem's solution; solved again with the starts held past their corners (Route.start_lo)
+    only when a start lies before one, so that a plan whose start was past it is unchanged. Where
+    no start past the corner fits, the first solution stands (its plan crosses the line)."""
+    solution = _passes(problem)
+    early = tuple(
+        pid
+        for pid, route in problem.routes.items()
+        if pid not in problem.stationary and not route.starts_at_rest and solution.starts[pid] < route.start_lo - 1e-6
+    )
+    if not early:
+        return solution
+    try:
+        return replace(_passes(replace(problem, held=early)), held=early)
+    except ConflictError:
+        return solution
+
+
+def _passes(problem: Problem) -> Solution:
     for t_max in NICE_T_MAX:
         try:
             return _patiently(problem, nice=True, t_max=t_max)
@@ -304,6 +324,8 @@ def _motion(pid: str, route: Route, problem: Problem, need: Any, nice: bool, z: 
     else:
         start = z.real(f"{pid}.start")
         need(f"{pid}.route", z3.And(start >= 0.0, start <= route.start_hi))
+        if pid in problem.held:  # past a corner its body would cross a line in (corners.py)
+            need(f"{pid}.route", start >= route.start_lo)
         from_rest = False
     motion.start = start
     bounds = [start, *positions]
