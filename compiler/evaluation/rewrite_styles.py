@@ -1,13 +1,13 @@
 """The metamorphic benchmark's rewrites into terse and lettered styles (`rewrites.REWRITES` registers them):
 
 - `terse`: each vehicle introduced by its description ("V1, a 2003 Honda Civic sedan, was" -> "A 2003 Honda
-  Civic sedan was") and called by its kind afterwards, without the article where the kind opens a sentence, as
-  police and dispatch notes write ("Sedan struck the pickup.");
+  Civic sedan was") and called by its kind afterwards (by its make where its description says no kind), without
+  the article where it opens a sentence, as police and dispatch notes write ("Sedan struck the Ford.");
 - `driver_letters`: the parties lettered by their drivers, as some agencies write: "the driver of V1" -> "Driver
   A", V1 -> "Driver A's vehicle".
 
-`terse` applies only where each vehicle's first mention introduces it with a kind word and the two kinds differ,
-so "the sedan" names one vehicle only (as `rewrite_roles.unnumbered` needs two makes).
+`terse` applies only where each vehicle's first mention introduces it and the two names differ and name no third
+road user, so "the sedan" names one vehicle only (as `rewrite_roles.unnumbered` needs two makes).
 """
 
 from __future__ import annotations
@@ -51,10 +51,11 @@ def terse(text: str) -> str:
     firsts = {pid: re.search(rf"\b{pid}\b", v) for pid in ("V1", "V2")}
     if set(intros) != {"V1", "V2"} or any(intros[p].start() != f.start() for p, f in firsts.items() if f):
         return text
-    kinds = {pid: _kind(m["desc"]) for pid, m in intros.items()}
-    if None in kinds.values() or len(set(kinds.values())) < 2:
+    # each by its kind, else by its make ("Sedan struck the Ford")
+    kinds = {pid: _kind(m["desc"]) or m["make"] for pid, m in intros.items()}
+    if len({k.lower() for k in kinds.values()}) < 2:
         return text
-    # (no other road user of either kind: "a parked sedan" would make "the sedan" two)
+    # (no other road user of either: "a parked sedan" would make "the sedan" two)
     if any(len(re.findall(r"\b(?:an?|another) (?:[\w-]+ ){0,5}?" + k + r"s?\b", v, re.I)) != 1 for k in kinds.values()):
         return text
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.kinds import kind_named
-from sovarc.compiler.frontend.roles import MAKE, narrator, partner
+from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
@@ -35,12 +35,8 @@ _DESCRIBED = re.compile(r"\b(?:19|20)\d\d\b|\b(?:north|south|east|west) ?bound\b
 # A kind's noun that modifies another names a place or a thing, not a road user: "the bike lane", "a bus stop".
 _NOT_USER = r"(?! (?:lanes?|paths?|routes?|stops?|shelters?|stations?|racks?|wash|park|parking|share|corrals?)\b)"
 # A kind's noun opening a sentence without an article, as police and dispatch notes write ("Motorcycle was
-# northbound", "Pickup turned left"): that road user, as "the motorcycle" is. Not a label ("Vehicle one", "Vehicle
-# 2", "Car A" number a party) nor a name ("Van Ness Avenue"): a bare kind is followed by a lower-case word.
-BARE = (
-    r"(?:(?<![\s\S])|(?<=[.!?;] )|(?<=[.!?]  )|(?<=\n))(?-i:(?=[A-Z][a-z]|SUVs?\b))"
-    r"(?=(?:" + _KINDS + r")s?(?![\w-])(?:[,.;]|$|\s+(?!(?i:one|two|three|four|five|six)\b)(?-i:[a-z])))"
-)
+# northbound", "Pickup turned left"): that road user, as "the motorcycle" is (see `roles.bare`).
+BARE = bare(_KINDS)
 _USER = re.compile(
     r"(?:\b(?:an?|the|another|one)\s+" + _MODS + r"|" + BARE + r")(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER,
     re.I,
@@ -109,7 +105,7 @@ def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) 
         + r"(?:\b(?:an?|the|another|that|this)\s+"
         + (_MODS.replace(".", "") if introduced else _MODS)  # (not across a sentence run on: "direction.The")
         + r"|"
-        + BARE
+        + bare(re.escape(phrase))
         + r")"
         + re.escape(phrase)
         + after
@@ -416,7 +412,13 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
                 users.append((kind, words))
         # every mention up to the impact, in order; those that introduce a road user ("a", "another")
         said = [(j, *u) for j in range(start, i + 1) for u in _users_in(sents[j])]
-        new = [(j, k, w) for j, k, w, _ in said if _introduces(w)]
+        new: list[tuple[int, str, str]] = []
+        for n, (j, k, w, _) in enumerate(said):
+            # (a bare kind or make introduces a road user where it is its first mention: see `roles.bare`)
+            if re.match(r"(?:an?|another|one) ", w, re.I) or (
+                _bare_intro(w) and k.lower() not in {e[1].lower() for e in said[:n]}
+            ):
+                new.append((j, k, w))
         if len(users) < (1 if v1 else 2) and (other := _OTHER.search(sentence)):
             users.append((_THE_OTHER, other.group()))  # "turned in front of the other vehicle"
         if len(users) < (1 if v1 else 2):
@@ -437,10 +439,10 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
     return []
 
 
-def _introduces(words: str) -> bool:
-    """Whether a road user's words introduce it: "a", "another", "one", or its kind alone opening a sentence
-    ("Motorcycle was northbound": see `BARE`)."""
-    return re.match(r"(?:an?|another|one) |" + BARE, words, re.I) is not None
+def _bare_intro(words: str) -> bool:
+    """Whether a road user's words are its kind or make alone opening a sentence ("Motorcycle was northbound",
+    "Honda was stopped": see `roles.bare`), which introduce it where they are its first mention."""
+    return re.match(BARE + "|" + bare(BARE_MAKES), words, re.I) is not None
 
 
 # A person said to drive a vehicle ("a 45-year-old man driving a Honda Civic", "a woman riding a motorcycle"):
