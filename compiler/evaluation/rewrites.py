@@ -19,6 +19,7 @@ from collections.abc import Callable
 from sovarc.compiler.evaluation import rewrite_clauses as clauses
 from sovarc.compiler.evaluation import rewrite_road as road
 from sovarc.compiler.evaluation import rewrite_roles as roles
+from sovarc.compiler.evaluation import rewrite_styles as styles
 from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
 from sovarc.compiler.evaluation.rewrite_police import POLICE
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
@@ -542,6 +543,9 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "unnumbered": roles.unnumbered,
     "first_person": roles.first_person,
     "insurer": roles.insurer,
+    # terse and lettered styles: bare kinds opening a sentence, drivers lettered (`rewrite_styles`)
+    "terse": styles.terse,
+    "driver_letters": styles.driver_letters,
 }
 
 

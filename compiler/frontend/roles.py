@@ -88,9 +88,30 @@ MAKES = (
     "Lincoln|Mack|Mazda|Mercedes-Benz|Mercedes|Mercury|Mini|Mitsubishi|Nissan|Oldsmobile|Peterbilt|Plymouth|Pontiac|"
     "Porsche|Ram|Saab|Saturn|Scion|Subaru|Suzuki|Tesla|Toyota|Volkswagen|VW|Volvo|Yamaha"
 )
+
+
+def bare(words: str) -> str:
+    """Where `words` (a pattern) open a sentence without an article, as police and dispatch notes write a road
+    user ("Motorcycle was northbound", "Honda struck the sedan"): capitalised, and followed by a lower-case word
+    or a stop, so that neither a label ("Vehicle one", "Car A") nor a name ("Van Ness Avenue") is taken for one."""
+    return (
+        r"(?:(?<![\s\S])|(?<=[.!?;] )|(?<=[.!?]  )|(?<=\n))(?-i:(?=[A-Z][a-z]|SUVs?\b))"
+        r"(?=(?i:" + words + r")s?(?![\w-])(?:[,.;]|$|\s+(?!(?i:one|two|three|four|five|six)\b)(?-i:[a-z])))"
+    )
+
+
+# Makes that are words or names too ("International", "Mini", "Lincoln"): only with an article.
+BARE_MAKES = "|".join(
+    m
+    for m in MAKES.split("|")
+    if m not in ("International", "Mini", "Ram", "Mercury", "Saturn", "Jaguar", "Lincoln", "Mack", "Infinity")
+)
 # (words before the make: a year, a colour, a heading, "parked and unoccupied"; after it, the model's capitalised or
-# numbered words)
+# numbered words; or the make alone opening a sentence: see `bare`)
 MAKE = re.compile(
-    r"\b(?:[Aa]n?|[Tt]he|[Aa]nother)\s+(?:(?!(?:of|the|a|an|or|was|were|is)\b)[\w.'-]+\s+){0,4}?"
-    r"(?P<make>" + MAKES + r")(?P<model>(?:[- ](?:[A-Z0-9][\w.-]*))*)\b(?![\w-])"
+    r"(?:\b(?:[Aa]n?|[Tt]he|[Aa]nother)\s+(?:(?!(?:of|the|a|an|or|was|were|is)\b)[\w.'-]+\s+){0,4}?|"
+    + bare(BARE_MAKES)
+    + r")(?P<make>"
+    + MAKES
+    + r")(?P<model>(?:[- ](?:[A-Z0-9][\w.-]*))*)\b(?![\w-])"
 )

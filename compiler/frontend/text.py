@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from sovarc.compiler.frontend.capitals import sentence_case
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
-from sovarc.compiler.frontend.labels import police_labels
+from sovarc.compiler.frontend.labels import drivers_vehicles, police_labels
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
@@ -143,7 +143,7 @@ def number_vehicles(text: str) -> str:
         return f"{'T' if m.group(1) == 'D' else 't'}he driver of V{number(raw)}"
 
     text = police_labels(text)
-    return ordinal_names(_DRIVER.sub(driver, _VEHICLE.sub(vehicle, text)))
+    return drivers_vehicles(ordinal_names(_DRIVER.sub(driver, _VEHICLE.sub(vehicle, text))))
 
 
 # "V2, a 2002 Mercury Mountaineer pickup" / "V1 was a 4-door 1999 Nissan Altima": make, model and body words

@@ -262,6 +262,19 @@ CASES = [
         "The insured vehicle was traveling east. Our insured braked. The claimant stated that the claimant vehicle "
         "struck the insured vehicle.",
     ),
+    # terse and lettered styles (`rewrite_styles.py`)
+    (
+        "terse",
+        "V1, a 2003 Honda Civic sedan, was traveling east. V2 was a 1998 Ford F-150 pickup that was stopped. V1 "
+        "struck the rear of V2.",
+        "A 2003 Honda Civic sedan was traveling east. A 1998 Ford F-150 pickup was stopped. Sedan struck the rear "
+        "of the pickup.",
+    ),
+    (
+        "driver_letters",
+        "The driver of V1 braked. V1 struck V2's left side.",
+        "Driver A braked. Driver A's vehicle struck Driver B's left side.",
+    ),
 ]
 
 
