@@ -52,30 +52,55 @@ def clear_start(
     route may use `lanes` (SUMO lane ids) reaches `upto` with no pose on the way that crosses a
     line into a lane beside it; 0.0 when it may start anywhere. `kerb`: the car drives into or off
     the road by a driveway, so the sidewalk is its to cross (the oracle's `kerb`)."""
-    if upto <= 0.0 or body.vclass == "pedestrian":
+    if upto <= 0.0:
         return 0.0
-    poses = line_poses(line, 0.0, upto)
+    crossed = crossings(line, lanes, net, body, 0.0, upto, kerb=kerb)
+    return float(min(crossed[-1] + STEP, upto)) if len(crossed) else 0.0
+
+
+def crossings(
+    line: Polyline,
+    lanes: Iterable[str],
+    net: Any,
+    body: Body,
+    lo: float,
+    hi: float,
+    *,
+    kerb: bool = False,
+    margin: float = 0.0,
+) -> np.ndarray:
+    """The arc lengths on `line`, every STEP from `lo` to `hi`, where the front of a car whose route may
+    use `lanes` stands in a pose the oracle would judge crossing a line into a lane beside it, its
+    body's corners moved out by `margin` (for a path that departs a little from the line)."""
+    none = np.zeros(0)
+    if hi <= lo or body.vclass == "pedestrian":
+        return none
+    poses = line_poses(line, lo, hi)
     if len(poses) < 2:
-        return 0.0
-    at = np.arange(len(poses)) * STEP
+        return none
+    at = max(0.0, lo) + np.arange(len(poses)) * STEP
     # only where the line turns over a body length can a corner leave the lane the front is in
     behind = line.headings(np.clip(at - body.length, 0.0, line.length))
     turned = np.abs((poses[:, 2] - behind + 180.0) % 360.0 - 180.0) > BEND
     if not turned.any():
-        return 0.0
+        return none
     allowed = [_lane(net, lane) for lane in sorted(set(lanes))]
     allowed = [lane for lane in allowed if lane is not None]
     if not allowed:
-        return 0.0
+        return none
     beside: dict[str, list[_Lane]] = {}  # per edge the front is on: the lanes beside it the route does not use
-    crossed = [int(k) for k in turned.nonzero()[0] if _crosses(poses[k], allowed, net, body, beside, kerb)]
-    if not crossed:
-        return 0.0
-    return float(min(at[crossed[-1]] + STEP, upto))
+    crossed = [int(k) for k in turned.nonzero()[0] if _crosses(poses[k], allowed, net, body, beside, kerb, margin)]
+    return at[crossed]
 
 
 def _crosses(
-    pose: np.ndarray, allowed: list[_Lane], net: Any, body: Body, cache: dict[str, list[_Lane]], kerb: bool
+    pose: np.ndarray,
+    allowed: list[_Lane],
+    net: Any,
+    body: Body,
+    cache: dict[str, list[_Lane]],
+    kerb: bool,
+    margin: float = 0.0,
 ) -> bool:
     """Whether the oracle would judge the body, its front at `pose`, crossing a line."""
     front = _front_lane(pose, allowed)
@@ -89,7 +114,7 @@ def _crosses(
     beside = cache[front.edge]
     if not beside:
         return False
-    corners = corner_array(pose[None, :], body.length, body.width, shrink=LINE_TOLERANCE)
+    corners = corner_array(pose[None, :], body.length, body.width, shrink=LINE_TOLERANCE - margin)
     inside_own = np.zeros(len(corners), dtype=bool)
     for lane in allowed:
         inside_own |= lane.line.distances(corners) <= lane.half

@@ -19,6 +19,7 @@ from sovarc.compiler.geometry.frame import Band
 from sovarc.compiler.geometry.polyline import Polyline, bezier, concat
 from sovarc.compiler.lower import kturn
 from sovarc.compiler.lower.backing import backing_route, is_backing
+from sovarc.compiler.lower.bends import keep_off_lines
 from sovarc.compiler.lower.corners import clear_start
 from sovarc.compiler.lower.corridor import Corridor, Drive, side_of
 from sovarc.compiler.lower.route import LEAD, Event, Route, order_stops
@@ -103,6 +104,12 @@ def vehicle_route(
     if entry is not None and approach_lanes:  # its body kept in its lane up to the stop line (swing.py)
         approach = Approach.of(float(np.interp(entry, from_s, line.s)), ((a.shape, a.width) for a in approach_lanes))
         line, from_s, _ = keep_in_lane(line, from_s, approach, body)
+    kerb = any(a.kind in (ActionKind.DRIVE_INTO, ActionKind.DRIVE_OFF) for a in actions)  # crosses the sidewalk
+    # past the latest start its bends are driven whatever the start: eased where its body would cross a line
+    latest = 0.0 if drive.start_off_road else float(np.interp(max(0.0, first - LEAD), from_s, line.s))
+    lanes = drive.lanes | lanes_touched(line, match)
+    keep = _laid_across(drive, events)
+    line, from_s = keep_off_lines(line, from_s, lanes, road_map.net, body, latest, kerb=kerb, keep=keep)
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
@@ -116,7 +123,6 @@ def vehicle_route(
     drive.lanes.update(lanes_touched(line, match))
     start_hi = carry(max(0.0, first - LEAD)) if not drive.start_off_road else 0.0
     moving = not (starts_at_rest or drive.start_off_road)
-    kerb = any(a.kind in (ActionKind.DRIVE_INTO, ActionKind.DRIVE_OFF) for a in actions)  # crosses the sidewalk
     return Route(
         participant=p,
         body=body,
@@ -130,6 +136,27 @@ def vehicle_route(
         notes=[f"{p.id} {n}" for n in drive.notes],
         manoeuvres=manoeuvres,
     )
+
+
+ACROSS_LINES = frozenset(
+    {
+        ActionKind.TURN_LEFT,
+        ActionKind.TURN_RIGHT,
+        ActionKind.CHANGE_LANE,
+        ActionKind.RETROGRADE,
+        ActionKind.DRIVE_INTO,
+        ActionKind.DRIVE_OFF,
+        ActionKind.U_TURN,
+        ActionKind.REVERSE,
+    }
+)  # actions whose stretch of line is laid out by their own geometry, over lines or off the road
+
+
+def _laid_across(drive: Drive, events: list[Event]) -> list[tuple[float, float]]:
+    """The stretches of the line (on the raw line's arc length) laid out across lines, which easing a
+    bend must leave as they are: a manoeuvre's legs, and the turns and the actions that move over."""
+    kept = [(m.lo, m.hi) for m in drive.manoeuvres]
+    return kept + [(e.lo, e.hi) for e in events if e.kind in ACROSS_LINES and e.hi > e.lo]
 
 
 def _along(drive: Drive, actions: tuple[Any, ...], indices: range, *, start: float, side: Side) -> float:
