@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower.corners import crossings
-from sovarc.compiler.lower.swing import MARGIN, MAX_SHIFT, REACH, _end, _quintic, _shift, _tightest
+from sovarc.compiler.lower.swing import MARGIN, MAX_SHIFT, REACH, end_pose, largest_shift, quintic, tightest_radius
 from sovarc.compiler.vehicles import Body, model
 
 BEFORE = (2.0, 4.0, 6.0, 8.0, 10.0, 12.0)  # m before the first crossing pose where an eased bend may begin
@@ -77,7 +77,7 @@ def _ease(
     """The best eased bend around the crossing pose at `first`: the line, and where the curve begins
     and ends (on the old line's arc length); None when none crosses nothing and stays near."""
     span = (first - max(BEFORE) - 1.0, first + max(AFTER) + 1.0)
-    floor = min(_tightest(line, *span), model(body).limits.path_radius)
+    floor = min(tightest_radius(line, *span), model(body).limits.path_radius)
     best: tuple[float, Polyline, float, float] | None = None
     for before, after, reach in itertools.product(BEFORE, AFTER, REACH):
         start, end = first - before, first + after
@@ -87,10 +87,10 @@ def _ease(
         if new is None:
             continue
         grown = new.length - line.length
-        radius = _tightest(new, start, end + grown)
+        radius = tightest_radius(new, start, end + grown)
         if radius < floor or (best is not None and radius <= best[0]):
             continue
-        if _shift(line, new, start, end) > MAX_SHIFT:
+        if largest_shift(line, new, start, end) > MAX_SHIFT:
             continue
         check_lo, check_hi = max(0.0, start - body.length), end + grown + body.length
         if len(crossings(new, lanes, net, body, check_lo, check_hi, kerb=kerb, margin=MARGIN)):
@@ -100,8 +100,8 @@ def _ease(
 
 
 def _curve(line: Polyline, start: float, end: float, reach: float) -> Polyline | None:
-    (p0, h0, k0), (p1, h1, k1) = _end(line, start), _end(line, end)
-    curve = _quintic(p0, h0, k0, p1, h1, k1, reach * math.dist(p0, p1))
+    (p0, h0, k0), (p1, h1, k1) = end_pose(line, start), end_pose(line, end)
+    curve = quintic(p0, h0, k0, p1, h1, k1, reach * math.dist(p0, p1))
     head, tail = line.points[line.s < start - 1e-6], line.points[line.s > end + 1e-6]
     try:
         new = Polyline(np.vstack([head, curve, tail]))

@@ -100,18 +100,18 @@ def keep_in_lane(
     here = Approach(approach.stop - lo, approach.lanes)
     span = (here.stop - max(AHEAD) - 1.0, here.stop + max(PAST) + 1.0)
     # a reshaped bend may be tighter only down to the body's tightest
-    floor = min(_tightest(piece, *span), model(body).limits.path_radius)
-    ends = {s: _end(piece, s) for s in [here.stop - a for a in AHEAD] + [here.stop + p for p in PAST]}
+    floor = min(tightest_radius(piece, *span), model(body).limits.path_radius)
+    ends = {s: end_pose(piece, s) for s in [here.stop - a for a in AHEAD] + [here.stop + p for p in PAST]}
     best: tuple[float, float, float, float] | None = None
     for ahead, past, reach in itertools.product(AHEAD, PAST, REACH):
         made = bend(piece, here, ahead, past, reach, ends)
         if made is None:
             continue
         new, crossing = made
-        radius = _tightest(new, span[0], crossing + max(PAST) + 1.0)
+        radius = tightest_radius(new, span[0], crossing + max(PAST) + 1.0)
         if radius < floor or (best is not None and radius <= best[0]):
             continue
-        if _shift(piece, new, here.stop - ahead, here.stop + past) > MAX_SHIFT:
+        if largest_shift(piece, new, here.stop - ahead, here.stop + past) > MAX_SHIFT:
             continue
         if Approach(crossing, here.lanes).line_overreach(new, body, since=here.stop - ahead) > -MARGIN:
             continue
@@ -139,12 +139,12 @@ def bend(
     replaced by a quintic curve that meets the line there in position, heading and curvature
     (`reach`: the length of its end tangents, as a share of its chord), and the arc length
     where it crosses the stop line. None when the stretch does not fit on the line. `ends`: the
-    line's `_end` at arc lengths already measured."""
+    line's `end_pose` at arc lengths already measured."""
     start, end = approach.stop - ahead, approach.stop + past
     if start < 1.0 or end > line.length - 1.0:
         return None
-    (p0, h0, k0), (p1, h1, k1) = (ends[s] if ends and s in ends else _end(line, s) for s in (start, end))
-    curve = _quintic(p0, h0, k0, p1, h1, k1, reach * math.dist(p0, p1))
+    (p0, h0, k0), (p1, h1, k1) = (ends[s] if ends and s in ends else end_pose(line, s) for s in (start, end))
+    curve = quintic(p0, h0, k0, p1, h1, k1, reach * math.dist(p0, p1))
     head, tail = line.points[line.s < start - 1e-6], line.points[line.s > end + 1e-6]
     new = Polyline(np.vstack([head, curve, tail]))
     if len(new.s) != len(head) + len(curve) + len(tail):
@@ -168,12 +168,12 @@ def _points(line: Polyline, at: np.ndarray) -> np.ndarray:
     return np.column_stack([np.interp(at, line.s, line.points[:, 0]), np.interp(at, line.s, line.points[:, 1])])
 
 
-def _shift(line: Polyline, new: Polyline, start: float, end: float) -> float:
+def largest_shift(line: Polyline, new: Polyline, start: float, end: float) -> float:
     """How far `new` (which replaces `line` from `start` to `end`) lies from it there."""
     return float(line.sub(start, end).distances(new.sub(start, end + new.length - line.length).points).max())
 
 
-def _tightest(line: Polyline, start: float, end: float) -> float:
+def tightest_radius(line: Polyline, start: float, end: float) -> float:
     """The smallest radius of curvature (over 2 m) between two arc lengths."""
     inside = (line.s >= start) & (line.s <= end)
     return float(line.curvature_radius(window=2.0)[inside].min()) if inside.any() else math.inf
@@ -182,7 +182,7 @@ def _tightest(line: Polyline, start: float, end: float) -> float:
 End = tuple[tuple[float, float], float, float]  # a point of a line, its heading and its curvature
 
 
-def _end(line: Polyline, s: float) -> End:
+def end_pose(line: Polyline, s: float) -> End:
     return line.point(s), line.heading(s - 1e-6), _curvature(line, s)
 
 
@@ -192,7 +192,7 @@ def _curvature(line: Polyline, s: float, half: float = 1.0) -> float:
     return math.radians((b - a + 180.0) % 360.0 - 180.0) / (2.0 * half)
 
 
-def _quintic(
+def quintic(
     p0: tuple[float, float],
     h0: float,
     k0: float,
