@@ -1,12 +1,12 @@
 """The metamorphic benchmark's rewrites into terse and lettered styles (`rewrites.REWRITES` registers them):
 
-- `terse`: each vehicle introduced by its description ("V1, a 2003 Honda Civic sedan, was" -> "A 2003 Honda
+- `bare_names`: each vehicle introduced by its description ("V1, a 2003 Honda Civic sedan, was" -> "A 2003 Honda
   Civic sedan was") and called by its kind afterwards (by its make where its description says no kind), without
   the article where it opens a sentence, as police and dispatch notes write ("Sedan struck the Ford.");
 - `driver_letters`: the parties lettered by their drivers, as some agencies write: "the driver of V1" -> "Driver
   A", V1 -> "Driver A's vehicle".
 
-`terse` applies only where each vehicle's first mention introduces it and the two names differ and name no third
+`bare_names` applies only where each vehicle's first mention introduces it and the two names differ and name no third
 road user, so "the sedan" names one vehicle only (as `rewrite_roles.unnumbered` needs two makes).
 """
 
@@ -40,7 +40,7 @@ def _kind(desc: str) -> str | None:
     return _CALLED.get(m[1].lower(), m[1].lower()) if m else None
 
 
-def terse(text: str) -> str:
+def bare_names(text: str) -> str:
     """ "V1, a 2003 Honda Civic sedan, was traveling ... V1 struck V2" -> "A 2003 Honda Civic sedan was traveling
     ... Sedan struck the pickup": each vehicle introduced by its description and called by its bare kind."""
     v = _V(text)

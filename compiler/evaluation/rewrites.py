@@ -544,7 +544,7 @@ REWRITES: dict[str, Callable[[str], str]] = {
     "first_person": roles.first_person,
     "insurer": roles.insurer,
     # terse and lettered styles: bare kinds opening a sentence, drivers lettered (`rewrite_styles`)
-    "terse": styles.terse,
+    "bare_names": styles.bare_names,
     "driver_letters": styles.driver_letters,
 }
 

@@ -264,7 +264,7 @@ CASES = [
     ),
     # terse and lettered styles (`rewrite_styles.py`)
     (
-        "terse",
+        "bare_names",
         "V1, a 2003 Honda Civic sedan, was traveling east. V2 was a 1998 Ford F-150 pickup that was stopped. V1 "
         "struck the rear of V2.",
         "A 2003 Honda Civic sedan was traveling east. A 1998 Ford F-150 pickup was stopped. Sedan struck the rear "
