@@ -316,6 +316,11 @@ class Action:
     to: int | Side | None = None  # target lane, for the actions whose spec allows it
     meta: Meta = META
 
+    @property
+    def sideless(self) -> bool:
+        """A lane change said without its side: the report left it open, lowering chooses it (lower/sides.py)."""
+        return self.kind is ActionKind.CHANGE_LANE and self.to is None
+
 
 @dataclass(frozen=True)
 class Participant:

@@ -245,8 +245,11 @@ def _settle_actions(
 
 def _side_of(ruled: Action, modelled: Action) -> Action | None:
     """The rules' side-less lane change with the side the model gives it, if that is what the two are."""
-    lane_changes = ruled.kind is modelled.kind is ActionKind.CHANGE_LANE
-    return replace(ruled, to=modelled.to) if lane_changes and ruled.to is None and modelled.to is not None else None
+    return (
+        replace(ruled, to=modelled.to)
+        if ruled.sideless and modelled.kind is ActionKind.CHANGE_LANE and modelled.to is not None
+        else None
+    )
 
 
 def _cites(numbers: tuple[int, ...]) -> str:

@@ -24,13 +24,9 @@ def names_a_lane_change(words: str) -> bool:
     return _NAMED.search(words) is not None
 
 
-def sideless(action: Action) -> bool:
-    return action.kind is ActionKind.CHANGE_LANE and action.to is None
-
-
 def one_lane_change(found: list[tuple[int, Action]]) -> list[tuple[int, Action]]:
     """The actions read (offset, action), without side-less lane changes when a lane change with its side or
     lane was read for the same vehicle."""
     if not any(a.kind is ActionKind.CHANGE_LANE and a.to is not None for _, a in found):
         return found
-    return [(at, a) for at, a in found if not sideless(a)]
+    return [(at, a) for at, a in found if not a.sideless]

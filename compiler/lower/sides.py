@@ -33,7 +33,7 @@ class _Known(Protocol):
 
 
 def sideless(p: Participant) -> bool:
-    return any(a.kind is ActionKind.CHANGE_LANE and a.to is None for a in p.known_actions)
+    return any(a.sideless for a in p.known_actions)
 
 
 def choose_sides(known: _Known) -> None:
@@ -72,7 +72,7 @@ def _choose(p: Participant, known: _Known) -> Participant:
     lane = p.lane if isinstance(p.lane, int) else 1
     actions = []
     for a in p.known_actions:
-        if a.kind is ActionKind.CHANGE_LANE and a.to is None:
+        if a.sideless:
             side = Side.LEFT if lane <= 1 else Side.RIGHT
             why = (
                 "from lane 1, the right-most of its direction, only the lane on its left is one of its direction"
