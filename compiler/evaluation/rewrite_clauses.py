@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, VEHICLE, digit, renamed
+from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, VEHICLE, cased, digit, renamed
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of
 
 # A sentence and the space after it; reports sometimes omit the space ("to damage.Vehicle #1 was").
@@ -238,8 +238,7 @@ def make_names(text: str) -> str:
             return m.group()
         if re.match(r",? \(", text[m.end() :]):
             return m.group()  # "Vehicle 1, (the Honda Pilot)": the report's own label follows
-        the = "The" if re.search(r"(?:^|[.!?])\s*$", text[: m.start()]) else "the"
-        return f"{the} {unique[pid][0]}"
+        return cased(f"the {unique[pid][0]}", text, m.start())
 
     return VEHICLE.sub(one, text)
 
@@ -249,8 +248,7 @@ def vehicle_ordinal(text: str) -> str:
 
     def one(m: re.Match[str]) -> str:
         n = digit(m.group("v") or m.group("w") or m.group("u"))
-        the = "The" if re.search(r"(?:^|[.!?])\s*$", text[: m.start()]) else "the"
-        return f"{the} {ORDINALS[n]} vehicle"
+        return cased(f"the {ORDINALS[n]} vehicle", text, m.start())
 
     return VEHICLE.sub(one, text)
 

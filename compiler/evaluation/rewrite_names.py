@@ -27,6 +27,16 @@ VEHICLE = re.compile(
 )
 
 
+def starts_sentence(text: str, at: int) -> bool:
+    """Whether `at` opens a sentence of `text` (what a rewrite writes there takes a capital)."""
+    return re.search(r"(?:^|[.!?])\s*$", text[:at]) is not None
+
+
+def cased(words: str, text: str, at: int) -> str:
+    """`words`, capitalised where they open a sentence of `text` at `at`."""
+    return words[0].upper() + words[1:] if starts_sentence(text, at) else words
+
+
 def through_v(rewrite: Callable[[str], str]) -> Callable[[str], str]:
     """A rewrite written for "V1" names, for a report naming its vehicles any way: the names are read as V1, V2,
     ... and each is given back its own words afterwards (the rewrites keep the names' order)."""

@@ -15,8 +15,9 @@ where no one speaks in the first person already. A report that does not fit is l
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
-from sovarc.compiler.evaluation.rewrite_names import renamed
+from sovarc.compiler.evaluation.rewrite_names import cased, renamed, starts_sentence
 
 _V = renamed(lambda n: f"V{n}")
 # Kind words after a make and model: "a 1997 Dodge Ram pickup", "a 1998 Ford Taurus station wagon".
@@ -38,15 +39,7 @@ _INTRO_WAS = re.compile(  # (at a sentence's start: see `_introductions`)
 )
 
 
-def _starts_sentence(text: str, at: int) -> bool:
-    return re.search(r"(?:^|[.!?])\s*$", text[:at]) is not None
-
-
-def _cap(words: str, text: str, at: int) -> str:
-    return words[0].upper() + words[1:] if _starts_sentence(text, at) else words
-
-
-def _two_vehicles(text: str) -> bool:
+def two_vehicles(text: str) -> bool:
     """A report of two vehicles, V1 and V2, no pedestrian, every name read as V1/V2 (none as "Driver #1")."""
     return (
         set(re.findall(r"\bV\d\b", text)) == {"V1", "V2"}
@@ -58,41 +51,56 @@ def _two_vehicles(text: str) -> bool:
 def unnumbered(text: str) -> str:
     """ "V1, a 2003 Honda Pilot, was traveling ... V2 struck V1" -> "A 2003 Honda Pilot was traveling ... V2
     struck the Honda": each vehicle introduced by its description alone and called by its make after it."""
-    v = _V(text)
-    if not _two_vehicles(v):
+    pair = introduced_pair(text)
+    if pair is None:
         return text
-    v = re.sub(r"(?<=\w)\s*\(\s*V\d\s*\)", "", v)  # a label after words that already say it ("the Honda (V1)")
-    intros = _introductions(v)
-    firsts = {pid: re.search(rf"\b{pid}\b", v) for pid in ("V1", "V2")}
-    if set(intros) != {"V1", "V2"} or any(intros[p].start() != f.start() for p, f in firsts.items() if f):
-        return text  # a vehicle named before it is introduced
+    v, intros = pair
     makes = {pid: m["make"] for pid, m in intros.items()}
     if len(set(makes.values())) < 2 or any(
         len(re.findall(r"\b(?:[Aa]n?|[Aa]nother) (?:[\w-]+ ){0,4}?" + make + r"\b", v)) != 1 for make in makes.values()
     ):
         return text  # one make for both, or a make said of a third road user: "the Honda" would not be one
+    return by_descriptions(v, intros, lambda pid, at: cased(f"the {makes[pid]}", v, at))
+
+
+def introduced_pair(text: str) -> tuple[str, dict[str, re.Match[str]]] | None:
+    """A report of two vehicles (`two_vehicles`) with its names as V1 and V2 and its labels after words that already
+    say them dropped ("the Honda (V1)"), and each vehicle's introduction; None unless each vehicle's first mention
+    introduces it (a vehicle named before its introduction would be left unnamed by a rewrite of the names)."""
+    v = _V(text)
+    if not two_vehicles(v):
+        return None
+    v = re.sub(r"(?<=\w)\s*\(\s*V\d\s*\)", "", v)
+    intros = _introductions(v)
+    firsts = {pid: re.search(rf"\b{pid}\b", v) for pid in ("V1", "V2")}
+    if set(intros) != {"V1", "V2"} or any(intros[p].start() != f.start() for p, f in firsts.items() if f):
+        return None
+    return v, intros
+
+
+def by_descriptions(text: str, intros: dict[str, re.Match[str]], later: Callable[[str, int], str]) -> str:
+    """`text` with each vehicle's introduction (`introduced_pair`) as its description alone, and every later
+    mention of V1 or V2 as `later(id, where)` says it."""
     out, at = [], 0
+
+    def mentions(part: str, offset: int) -> str:
+        return re.sub(r"\bV\d\b", lambda m: later(m.group(), offset + m.start()), part)
+
     for m in sorted(intros.values(), key=lambda m: m.start()):
-        out.append(_later(v[at : m.start()], makes, v, at))
-        desc = _cap(m["desc"], v, m.start())
-        out.append(desc + (" was " if m.re is _INTRO_WAS else ""))
+        out.append(mentions(text[at : m.start()], at))
+        out.append(cased(m["desc"], text, m.start()) + (" was " if m.re is _INTRO_WAS else ""))
         at = m.end()
-    out.append(_later(v[at:], makes, v, at))
+    out.append(mentions(text[at:], at))
     return "".join(out)
 
 
 def _introductions(text: str) -> dict[str, re.Match[str]]:
     """Each vehicle's first introduction, "V1, a 2003 Honda Pilot," or a sentence "V1 was a 2003 Honda Pilot"."""
-    found = [*_INTRO_ASIDE.finditer(text), *(m for m in _INTRO_WAS.finditer(text) if _starts_sentence(text, m.start()))]
+    found = [*_INTRO_ASIDE.finditer(text), *(m for m in _INTRO_WAS.finditer(text) if starts_sentence(text, m.start()))]
     intros: dict[str, re.Match[str]] = {}
     for m in sorted(found, key=lambda m: m.start()):
         intros.setdefault(m["name"], m)
     return intros
-
-
-def _later(part: str, makes: dict[str, str], text: str, offset: int) -> str:
-    """A later mention of each vehicle as "the <make>"."""
-    return re.sub(r"\bV\d\b", lambda m: _cap(f"the {makes[m.group()]}", text, offset + m.start()), part)
 
 
 # A pronoun and the case it takes in the first person.
@@ -107,7 +115,7 @@ def first_person(text: str) -> str:
     north. My vehicle struck V2.": V1 told by its driver. A pronoun becomes the first person where the participant
     last named before it is V1 (its driver's "he", "his", "her")."""
     v = _V(text)
-    if not _two_vehicles(v) or re.search(r"\b(?:I|my|me|we|our)\b", v, re.I):
+    if not two_vehicles(v) or re.search(r"\b(?:I|my|me|we|our)\b", v, re.I):
         return text
     # pronouns first, by the mention before each (then the names change)
     out, at = [], 0
@@ -127,19 +135,19 @@ def first_person(text: str) -> str:
         else:
             mine = "my"
         if mine != "I":
-            mine = _cap(mine, v, m.start())
+            mine = cased(mine, v, m.start())
         out.append(v[at : m.start()] + mine)
         at = m.end()
     v = "".join(out) + v[at:]
     v = re.sub(r"\bI (has|is|does|isn't|hasn't)\b", lambda m: "I " + _VERB_OF_I[m.group(1)], v)
     v = re.sub(r"\b[Tt]he (?:driver|operator) of V1\b", lambda m: "I" if _subject(v, m.start()) else "me", v)
-    v = re.sub(r"\bV1\b", lambda m: _cap("my vehicle", v, m.start()), v)
+    v = re.sub(r"\bV1\b", lambda m: cased("my vehicle", v, m.start()), v)
     return v
 
 
 def _subject(text: str, at: int) -> bool:
     """Whether a name at `at` opens its clause (a sentence, or after a conjunction or a comma)."""
-    return _starts_sentence(text, at) or bool(
+    return starts_sentence(text, at) or bool(
         re.search(r"(?:[,;]|\b(?:that|and|but|when|as|while|because|after|before|if|so|then|where))\s*$", text[:at])
     )
 
@@ -148,9 +156,9 @@ def insurer(text: str) -> str:
     """ "The driver of V1 ... V1 struck V2 ... the driver of V2" -> "Our insured ... The insured vehicle struck the
     claimant vehicle ... the claimant": an adjuster's names for the two parties."""
     v = _V(text)
-    if not _two_vehicles(v) or re.search(r"\b(?:insured|claimant)\b", v, re.I):
+    if not two_vehicles(v) or re.search(r"\b(?:insured|claimant)\b", v, re.I):
         return text
-    v = re.sub(r"\b[Tt]he (?:driver|operator) of V1\b", lambda m: _cap("our insured", v, m.start()), v)
-    v = re.sub(r"\b[Tt]he (?:driver|operator) of V2\b", lambda m: _cap("the claimant", v, m.start()), v)
-    v = re.sub(r"\bV1\b", lambda m: _cap("the insured vehicle", v, m.start()), v)
-    return re.sub(r"\bV2\b", lambda m: _cap("the claimant vehicle", v, m.start()), v)
+    v = re.sub(r"\b[Tt]he (?:driver|operator) of V1\b", lambda m: cased("our insured", v, m.start()), v)
+    v = re.sub(r"\b[Tt]he (?:driver|operator) of V2\b", lambda m: cased("the claimant", v, m.start()), v)
+    v = re.sub(r"\bV1\b", lambda m: cased("the insured vehicle", v, m.start()), v)
+    return re.sub(r"\bV2\b", lambda m: cased("the claimant vehicle", v, m.start()), v)

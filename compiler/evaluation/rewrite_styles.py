@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.evaluation.rewrite_names import renamed
-from sovarc.compiler.evaluation.rewrite_roles import _INTRO_WAS, _cap, _introductions, _starts_sentence, _two_vehicles
+from sovarc.compiler.evaluation.rewrite_names import renamed, starts_sentence
+from sovarc.compiler.evaluation.rewrite_roles import by_descriptions, introduced_pair, two_vehicles
 
 _V = renamed(lambda n: f"V{n}")
 # The kind word a description ends with, and what a terse note calls that kind.
@@ -43,14 +43,10 @@ def _kind(desc: str) -> str | None:
 def bare_names(text: str) -> str:
     """ "V1, a 2003 Honda Civic sedan, was traveling ... V1 struck V2" -> "A 2003 Honda Civic sedan was traveling
     ... Sedan struck the pickup": each vehicle introduced by its description and called by its bare kind."""
-    v = _V(text)
-    if not _two_vehicles(v):
+    pair = introduced_pair(text)
+    if pair is None:
         return text
-    v = re.sub(r"(?<=\w)\s*\(\s*V\d\s*\)", "", v)
-    intros = _introductions(v)
-    firsts = {pid: re.search(rf"\b{pid}\b", v) for pid in ("V1", "V2")}
-    if set(intros) != {"V1", "V2"} or any(intros[p].start() != f.start() for p, f in firsts.items() if f):
-        return text
+    v, intros = pair
     # each by its kind, else by its make ("Sedan struck the Ford")
     kinds = {pid: _kind(m["desc"]) or m["make"] for pid, m in intros.items()}
     if len({k.lower() for k in kinds.values()}) < 2:
@@ -59,28 +55,17 @@ def bare_names(text: str) -> str:
     if any(len(re.findall(r"\b(?:an?|another) (?:[\w-]+ ){0,5}?" + k + r"s?\b", v, re.I)) != 1 for k in kinds.values()):
         return text
 
-    def later(part: str, offset: int) -> str:
-        def name(m: re.Match[str]) -> str:
-            kind = kinds[m.group()]  # type: ignore[index]
-            if _starts_sentence(v, offset + m.start()):
-                return kind[0].upper() + kind[1:]
-            return f"the {kind}"
+    def later(pid: str, at: int) -> str:
+        kind = kinds[pid]
+        return kind[0].upper() + kind[1:] if starts_sentence(v, at) else f"the {kind}"
 
-        return re.sub(r"\bV\d\b", name, part)
-
-    out, at = [], 0
-    for m in sorted(intros.values(), key=lambda m: m.start()):
-        out.append(later(v[at : m.start()], at))
-        out.append(_cap(m["desc"], v, m.start()) + (" was " if m.re is _INTRO_WAS else ""))
-        at = m.end()
-    out.append(later(v[at:], at))
-    return "".join(out)
+    return by_descriptions(v, intros, later)
 
 
 def driver_letters(text: str) -> str:
     """ "The driver of V1 ... V1 struck V2's side" -> "Driver A ... Driver A's vehicle struck Driver B's side"."""
     v = _V(text)
-    if not _two_vehicles(v):
+    if not two_vehicles(v):
         return text
 
     def letter(n: str) -> str:

@@ -20,7 +20,15 @@ from sovarc.compiler.evaluation import rewrite_clauses as clauses
 from sovarc.compiler.evaluation import rewrite_road as road
 from sovarc.compiler.evaluation import rewrite_roles as roles
 from sovarc.compiler.evaluation import rewrite_styles as styles
-from sovarc.compiler.evaluation.rewrite_names import ANY_NAME, ORDINALS, WORDS, digit, renamed, through_v
+from sovarc.compiler.evaluation.rewrite_names import (
+    ANY_NAME,
+    ORDINALS,
+    WORDS,
+    digit,
+    renamed,
+    starts_sentence,
+    through_v,
+)
 from sovarc.compiler.evaluation.rewrite_police import POLICE
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
 
@@ -157,16 +165,12 @@ _VEHICLE_DOES = re.compile(
 _DRIVER_DOES = re.compile(r"\b(?P<the>[Tt]he) (?:driver|operator) of (?P<name>V\d) (?P<then>then )?(?=" + _DRIVE + ")")
 
 
-def _starts_sentence(text: str, at: int) -> bool:
-    return re.search(r"(?:^|[.!?])\s*$", text[:at]) is not None
-
-
 def driver_of(text: str) -> str:
     """ "V1 was traveling north" -> "The driver of V1 was traveling north": the driver does what the car does."""
 
     def one(m: re.Match[str]) -> str:
         lead = m.group("lead")
-        the = "The" if _starts_sentence(text, m.start("name")) else "the"
+        the = "The" if starts_sentence(text, m.start("name")) else "the"
         return f"{lead}{the} driver of {m.group('name')} {m.group('then') or ''}"
 
     return _VEHICLE_DOES.sub(one, text)
