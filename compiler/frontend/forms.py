@@ -13,6 +13,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from sovarc.compiler.frontend.sentences import opens_sentence
+
 _STOP = r"(?:\.(?=\s+(?-i:[a-z0-9])))?"  # an abbreviation's full stop inside a sentence
 
 
@@ -29,8 +31,7 @@ def _sub(pattern: str, word: Callable[[re.Match[str]], str], flags: int = re.I) 
 
     def one(m: re.Match[str]) -> str:
         s, e = m.start("ab") - m.start(), m.end("ab") - m.start()
-        first = re.search(r"(?:^|[.!?]\s+)$", m.string[: m.start("ab")]) is not None
-        return m.group()[:s] + _said(m["ab"], word(m), first) + m.group()[e:]
+        return m.group()[:s] + _said(m["ab"], word(m), opens_sentence(m.string, m.start("ab"))) + m.group()[e:]
 
     return lambda text: compiled.sub(one, text)
 
@@ -52,7 +53,13 @@ _SIDE_AFTER = (
 _SIDE_BEFORE = r"\b(?:turn|turned|turning|turns|veered|veering|swerved|swerving|steered|steering|to|the|a) "
 _SIDE_WORD = r"(?P<ab>\b(?P<side>rt|lt)\b" + _STOP + r")(?!\s*#?\s*\d)"
 
+# Police narratives' abbreviations with their full stops inside a sentence: "Veh. #1", "VEH 2", "approx. 30 mph".
+_VEH_NUMBERED = re.compile(r"\b([Vv])(?:eh|EH)\.?(?=\s*(?:#|no\.)?\s*\d(?![\w-]))")
+_APPROX_STOP = re.compile(r"\b([Aa])pprox\.(?!\w)")
+
 _RULES: tuple[Callable[[str], str], ...] = (
+    lambda text: _VEH_NUMBERED.sub(r"\1ehicle", text),
+    lambda text: _APPROX_STOP.sub(r"\1pproximately", text),
     # "FTYROW", "FTY": the code for the driver's error the narrative names
     _sub(r"(?P<ab>\bFTYROW\b)", lambda m: "failed to yield the right of way"),
     _sub(r"(?P<ab>\bFTY\b)", lambda m: "failed to yield"),
@@ -71,7 +78,7 @@ _RULES: tuple[Callable[[str], str], ...] = (
     _sub(r"(?P<ab>\bveh(?P<s>s?)\b" + _STOP + r")(?![\w-])", lambda m: "vehicle" + m["s"].lower()),
     _sub(r"(?P<ab>\bped(?P<s>s?)\b" + _STOP + r")(?![\w-])", lambda m: "pedestrian" + m["s"].lower()),
     _sub(r"(?P<ab>\bdrvr?\b" + _STOP + r")(?![\w-])", lambda m: "driver"),
-    # "APPROX 30 MPH": without its full stop ("approx." is `spelling`'s)
+    # "APPROX 30 MPH": without its full stop ("approx." with its stop: the rules at the top)
     _sub(r"(?P<ab>\bapprox\b)(?![.\w-])", lambda m: "approximately"),
 )
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.sentences import opens_sentence
+
 _ARTICLE = r"(?<!\ba )(?<!\ban )(?<!\bthe )(?<!\bA )(?<!\bAn )(?<!\bThe )"
 _VEHICLE_WORD = r"(?:vehicle|car|truck|van|suv|pickup|motorcycle|bus|unit)"
 # "the #2 vehicle", "#1 VEH": the number before the noun
@@ -29,10 +31,6 @@ _DRIVER = re.compile(_ARTICLE + r"\bD(\d)\b(?![\w-])")
 _LETTER = re.compile(r"\b((?i:car|vehicle|veh|unit|driver))\s*#?\s*([A-F])\b(?![\w-])")
 
 
-def _starts(text: str, at: int) -> bool:
-    return re.search(r"(?:^|[.!?]\s+)$", text[:at]) is not None
-
-
 def _numbered(pattern: re.Pattern[str], text: str, first: str) -> bool:
     """Whether the report numbers its parties by this label: it uses the first one (see above)."""
     return any(m.group(1) == first for m in pattern.finditer(text))
@@ -45,13 +43,13 @@ def police_labels(text: str) -> str:
     if _numbered(_UNIT, text, "1"):
         text = _UNIT.sub(lambda m: f"V{m[1]}", text)
     if _numbered(_DRIVER, text, "1"):
-        text = _DRIVER.sub(lambda m: f"{'T' if _starts(text, m.start()) else 't'}he driver of V{m[1]}", text)
+        text = _DRIVER.sub(lambda m: f"{'T' if opens_sentence(text, m.start()) else 't'}he driver of V{m[1]}", text)
     if any(m[2] == "A" for m in _LETTER.finditer(text)):
 
         def letter(m: re.Match[str]) -> str:
             n = ord(m[2]) - ord("A") + 1
             if m[1].lower() == "driver":
-                return f"{'T' if _starts(text, m.start()) else 't'}he driver of V{n}"
+                return f"{'T' if opens_sentence(text, m.start()) else 't'}he driver of V{n}"
             return f"V{n}"
 
         text = _LETTER.sub(letter, text)

@@ -15,6 +15,11 @@ def sentences(text: str) -> list[str]:
     return [p.strip() for p in parts if p.strip()]
 
 
+def opens_sentence(text: str, at: int) -> bool:
+    """Whether `at` opens a sentence of `text`: what a reader writes out there takes a capital."""
+    return re.search(r"(?:^|[.!?]\s+)$", text[:at]) is not None
+
+
 # A filing's note before its narrative: an update says what changed in the report, and names the crash's parties
 # as already known ("the vehicle that struck the AV had encountered debris", "an injury to the pedestrian involved
 # in contact with the AV"). The note is about the report, not the crash: its sentences open on the report ("This

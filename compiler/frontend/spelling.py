@@ -21,15 +21,9 @@ _JUNCTION = re.compile(r"\b([Jj]unction|[Cc]rossroads)(s?)\b(?! box)")
 _HANDED = re.compile(r"\b(left|right)[- ]hand(?=[- ]turn)", re.I)
 
 
-# Police narratives' abbreviations, with their full stops inside a sentence: "Veh. #1", "VEH 2", "approx. 30 mph".
-_VEH = re.compile(r"\b([Vv])(?:eh|EH)\.?(?=\s*(?:#|no\.)?\s*\d(?![\w-]))")
-_APPROX = re.compile(r"\b([Aa])pprox\.(?!\w)")
-
-
 def spell_out(text: str) -> str:
     """The report with its abbreviations written out, word for word ("N/B" -> "northbound"), so that every reader
     reads one spelling."""
-    text = _APPROX.sub(r"\1pproximately", _VEH.sub(r"\1ehicle", text))
     text = police_forms(text)
     text = _BOUND_SHORT.sub(lambda m: _POINTS[m.group(1)] + "bound", text)
     # "an Olli shuttle (V1.0)": a capital V before a dotted number is a version, not a vehicle's label
