@@ -5,6 +5,8 @@
 - frame.py: the road frame (s, d) across a road, `Band`.
 - bodies.py: the oriented body box `Box` with ONE touching rule (touching is not overlapping),
   its overlap, and the first touch of two moving boxes (`Contact`).
+- lanes.py: a network's lanes as shapes (`LaneMap`): which lane a point is on, heading which way.
+- lane_lines.py: THE lane-line test (a body over a painted line into a lane its route may not use).
 """
 
 from sovarc.compiler.geometry.angles import angle_diff, angle_diffs, circular_mean, compass, heading_vector

@@ -22,9 +22,9 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Iterable
-from typing import Any
 
 import numpy as np
+from sovarc.compiler.geometry.lanes import LaneMap
 from sovarc.compiler.geometry.polyline import Polyline
 from sovarc.compiler.lower.corners import crossings
 from sovarc.compiler.lower.swing import MARGIN, MAX_SHIFT, REACH, end_pose, largest_shift, quintic, tightest_radius
@@ -39,7 +39,7 @@ def keep_off_lines(
     line: Polyline,
     from_s: np.ndarray,
     lanes: Iterable[str],
-    net: Any,
+    net: LaneMap,
     body: Body,
     lo: float,
     *,
@@ -72,7 +72,13 @@ def keep_off_lines(
 
 
 def _ease(
-    line: Polyline, first: float, lanes: list[str], net: Any, body: Body, kerb: bool, fixed: list[tuple[float, float]]
+    line: Polyline,
+    first: float,
+    lanes: list[str],
+    net: LaneMap,
+    body: Body,
+    kerb: bool,
+    fixed: list[tuple[float, float]],
 ) -> tuple[Polyline, float, float] | None:
     """The best eased bend around the crossing pose at `first`: the line, and where the curve begins
     and ends (on the old line's arc length); None when none crosses nothing and stays near."""

@@ -27,6 +27,7 @@ from sovarc.compiler.lower.swing import Approach, keep_in_lane
 from sovarc.compiler.lower.uturn import choose, too_narrow, u_turn_line
 from sovarc.compiler.lower.wide import wide_turn
 from sovarc.compiler.maps import Arm, Connection, LaneInfo, RoadMap, SiteMatch
+from sovarc.compiler.maps.lane_map import lane_map
 from sovarc.compiler.maps.needs import JUNCTION_MOVES
 from sovarc.compiler.maps.search import geometric_exit
 from sovarc.compiler.vehicles import PLANNED, Body, model, participant_model
@@ -109,7 +110,8 @@ def vehicle_route(
     latest = 0.0 if drive.start_off_road else float(np.interp(max(0.0, first - LEAD), from_s, line.s))
     lanes = drive.lanes | lanes_touched(line, match)
     keep = _laid_across(drive, events)
-    line, from_s = keep_off_lines(line, from_s, lanes, road_map.net, body, latest, kerb=kerb, keep=keep)
+    lines = lane_map(road_map)  # the lanes as the oracle's lane-line test sees them
+    line, from_s = keep_off_lines(line, from_s, lanes, lines, body, latest, kerb=kerb, keep=keep)
 
     def carry(x: float) -> float:
         return float(np.interp(x, from_s, line.s))
@@ -131,7 +133,7 @@ def vehicle_route(
         lanes=tuple(sorted(drive.lanes)),
         edges=tuple(drive.edges),
         start_hi=start_hi,
-        start_lo=clear_start(line, drive.lanes, road_map.net, body, start_hi, kerb=kerb) if moving else 0.0,
+        start_lo=clear_start(line, drive.lanes, lines, body, start_hi, kerb=kerb) if moving else 0.0,
         starts_at_rest=starts_at_rest or drive.start_off_road,
         notes=[f"{p.id} {n}" for n in drive.notes],
         manoeuvres=manoeuvres,

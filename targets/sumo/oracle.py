@@ -45,6 +45,7 @@ from sovarc.compiler.crashes import (
     victim_face,
 )
 from sovarc.compiler.geometry.bodies import Box, Contact, closest_points
+from sovarc.compiler.geometry.lane_lines import crossed_lane
 from sovarc.compiler.plan import Plan, Trajectory
 from sovarc.dsl.ir import ActionKind
 from sovarc.targets.sumo.network import Network
@@ -254,29 +255,12 @@ def _uses_driveway(plan: Plan, participant: str) -> bool:
 
 def lane_violation(network: Network, t: Trajectory, pose: Pose, kerb: bool = False) -> str | None:
     """A lane beside the one SUMO has the participant on (same road, either direction) that its
-    body reaches into beyond the tolerance, or that lane itself, when its actions do not allow it.
-    Lanes ahead or behind (a body overhanging the end of a lane) and junctions are not checked.
-    Sidewalks are allowed to pedestrians, and with `kerb` to a car that drives into or off the
-    road by a driveway, which crosses the sidewalk on its way."""
-    allowed = set(t.lanes)
+    body reaches into beyond the tolerance, or that lane itself, when its actions do not allow it:
+    the kernel's lane-line test (compiler/geometry/lane_lines.py). `kerb`: it drives into or off
+    the road by a driveway, and so crosses the sidewalk on its way."""
     lane = network.lanes.get(pose.lane)
-    if lane is None or lane.internal:
+    if lane is None:
         return None
+    corners = body_of(t, pose).corners(shrink=LINE_TOLERANCE)
     pedestrian = t.body.vclass == "pedestrian"
-    may_cross = pedestrian or kerb
-    if lane.id not in allowed and not (may_cross and lane.pedestrian_only):
-        return None if pedestrian else lane.id
-    beside = [
-        other
-        for other in network.alongside(lane)
-        if other.id not in allowed and not (may_cross and other.pedestrian_only)
-    ]
-    for x, y in body_of(t, pose).corners(shrink=LINE_TOLERANCE):
-        for other in beside:
-            if network.reaches(other, x, y, other.width / 2.0) and not _in_allowed(network, allowed, x, y):
-                return other.id
-    return None
-
-
-def _in_allowed(network: Network, allowed: set[str], x: float, y: float) -> bool:
-    return any(network.reaches(lane, x, y, lane.width / 2.0) for lane in network.near(x, y, 1.0) if lane.id in allowed)
+    return crossed_lane(network, lane, set(t.lanes), corners, pedestrian=pedestrian, kerb=kerb)

@@ -16,7 +16,8 @@ from pathlib import Path
 import pytest
 import sumo
 from sovarc.compiler.geometry.angles import angle_diff, compass
-from sovarc.targets.sumo.network import CELL, HEADING_MATCH, LONG_LANE, Lane, Network, read_network
+from sovarc.compiler.geometry.lanes import CELL, HEADING_MATCH, LONG_LANE, Lane
+from sovarc.targets.sumo.network import Network, read_network
 
 from tests.targets.sumo.plans import TOWN
 
