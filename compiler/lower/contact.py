@@ -217,7 +217,9 @@ class _View:
         rad = np.radians(headings)
         points = route.line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
         # the lines are compared by the way they run: a backing body runs against the way it faces
-        travel = (headings + 180.0 * np.array([route.backing(float(x)) for x in s])) % 360.0
+        # (and so does one on a reverse leg its route ends in, midturn.py)
+        reverse_leg = route.backs_at_end and not route.manoeuvres[-1].backing
+        travel = (headings + 180.0 * np.array([reverse_leg or route.backing(float(x)) for x in s])) % 360.0
         return cls(points, s - last, travel, route.body, last)
 
 
