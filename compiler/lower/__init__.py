@@ -200,7 +200,8 @@ def _on_earlier_leg(
     for pid in (striker_id, victim_id):
         for cut, note in earlier_legs(routes[pid]):
             tried = {**routes, pid: cut}
-            found = contacts(tried[striker_id], tried[victim_id], crash)
+            # a turner creeps through its legs: a moving partner's side is met anywhere along it
+            found = contacts(tried[striker_id], tried[victim_id], crash, sides=True)
             found = [c for c in found if brakes_in_time(cut, c, pid == striker_id)]
             if found:
                 return tried, found, note

@@ -94,14 +94,21 @@ class Contact:
 
 
 def contacts(
-    striker: Route, victim: Route, crash: CrashType, *, whole: bool = False, lines: Lines | None = None
+    striker: Route,
+    victim: Route,
+    crash: CrashType,
+    *,
+    whole: bool = False,
+    lines: Lines | None = None,
+    sides: bool = False,
 ) -> list[Contact]:
     """Every contact the crash type accepts, best first. A participant that turns in legs (a
     three-point turn) meets the other only after its last change of gear: the crash is on a
     forward leg and the solver puts it on the last one. A striker backing at the end of its route
     meets the victim with its rear, the line `body.length` behind its front bumper along the way it
     faces. `whole`: on the whole lines (to tell why there is no contact). `lines`: the pair's views
-    and distances already made, for a caller asking of the same two routes more than once."""
+    and distances already made, for a caller asking of the same two routes more than once. `sides`:
+    a side crash met at each of TURNING_SIDE's places on the victim's side, whoever turns in legs."""
     lines = lines if lines is not None else Lines(striker, victim)
     assert lines.striker is striker and lines.victim is victim
     backing = striker.backs_at_end
@@ -124,7 +131,7 @@ def contacts(
         lead = striker.body.length if backing else 0.0
         mine = lines.view(striker, "turns", lead) if striker.manoeuvres else lines.view(striker, "front")
         found = []
-        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[named],):
+        for face in TURNING_SIDE if side and (victim.manoeuvres or sides) else (FACE[named],):
             fronts: _View | None = None  # the victim's front bumper's line, when it has one
             if victim.manoeuvres:  # the face itself: k is in the view
                 theirs, back = lines.view(victim, "turns", face * victim.body.length), 0.0
