@@ -19,6 +19,7 @@ from sovarc.compiler.lower.assume import COMPASS, assume
 from sovarc.compiler.lower.centre import centre_lanes
 from sovarc.compiler.lower.consistency import check_headings
 from sovarc.compiler.lower.contact import SIDE_TURNED, Contact, Lines, contacts, describe
+from sovarc.compiler.lower.midturn import brakes_in_time, earlier_legs
 from sovarc.compiler.lower.pedestrian import pedestrian_route, walking_speed
 from sovarc.compiler.lower.route import Route
 from sovarc.compiler.lower.routes import DEFAULT_MOVES, vehicle_route
@@ -85,10 +86,14 @@ def stagings_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: 
     # staging: a turn across the partner's path that meets it head-on is the likelier crash
     # last, the pair's junction moves made from the lanes the report puts them in, across the lanes
     # the map makes those moves from (routes._from_own_lane): the map's arrows are kept while they can be
-    passes = [(False, False)] + ([(True, False)] if crash.type is CrashType.FRONTAL else []) + [(False, True)]
-    for corner, keep in passes:
+    # last of all, where one of the pair turns in legs: the crash on an earlier leg of the turn, its
+    # route cut where that leg ends (midturn.py), after every staging of the whole turn
+    passes = [(False, False, False)] + ([(True, False, False)] if crash.type is CrashType.FRONTAL else [])
+    passes += [(False, True, False), (False, False, True)]
+    for corner, keep, legs in passes:
         for rotated in _rotations(scenario, match):
-            for item in _lower_rotated(scenario, rotated, road_map, notes, limit, limit_fact, match, corner, keep):
+            args = (limit, limit_fact, match, corner, keep, legs)
+            for item in _lower_rotated(scenario, rotated, road_map, notes, *args):
                 if isinstance(item, UnsatError):
                     first = first or item
                 else:
@@ -118,11 +123,13 @@ def _lower_rotated(
     chosen: SiteMatch,
     corner: bool = False,
     keep: bool = False,
+    legs: bool = False,
 ) -> Iterator[Lowered | UnsatError]:
     """The solved stagings on one rotation of the site, in order, with the reason each one that fails
     does; `corner`: those met at a corner (contact._corner) alone, else all others; `keep`: only the
     one with the pair's junction moves made from their own lanes, when the map makes one of them
-    from another lane (none else)."""
+    from another lane (none else); `legs`: only those where one of the pair turns in legs, met on
+    an earlier leg of the turn (midturn.py; the first reason stands)."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     kept = _off_their_lanes(scenario, match, (crash.striker, crash.victim)) if keep else set()
@@ -143,13 +150,19 @@ def _lower_rotated(
                 raise
             return  # the last pass's own route cannot be laid (a corner too tight): the first reason stands
         striker, victim = routes[crash.striker], routes[crash.victim]
-        found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
+        if legs:
+            routes, found, leg = _on_earlier_leg(routes, crash.type, crash.striker, crash.victim)
+        else:
+            leg = ""
+            found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
+        if not found and legs:
+            continue
         if not found:
             if corner:
                 continue  # the reason is the first pass's
             yield UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
             continue
-        extra = [why] if why else []
+        extra = [note for note in (why, leg) if note]
         extra += [n for route in routes.values() for n in route.notes]
         for item in _schedules(scenario, routes, found, limit, limit_fact):
             if isinstance(item, ConflictError):
@@ -176,6 +189,23 @@ def _lower_rotated(
 
 
 Staging = tuple[Scenario, dict[str, tuple[ActionKind, str]], str | None]
+
+
+def _on_earlier_leg(
+    routes: dict[str, Route], crash: CrashType, striker_id: str, victim_id: str
+) -> tuple[dict[str, Route], list[Contact], str]:
+    """Where one of the pair turns in legs: the routes with that one's cut where the first leg
+    that meets the other ends, its contacts and a note (midturn.py); else the routes, no contact
+    and no note."""
+    for pid in (striker_id, victim_id):
+        for cut, note in earlier_legs(routes[pid]):
+            tried = {**routes, pid: cut}
+            # a turner creeps through its legs: a moving partner's side is met anywhere along it
+            found = contacts(tried[striker_id], tried[victim_id], crash, sides=True)
+            found = [c for c in found if brakes_in_time(cut, c, pid == striker_id)]
+            if found:
+                return tried, found, note
+    return routes, [], ""
 
 
 def _stagings(scenario: Scenario, crash: CrashType, striker_id: str, victim_id: str) -> list[Staging]:
@@ -485,7 +515,7 @@ def _no_contact(
     if turning and contacts(striker, victim, crash, whole=True, lines=lines):
         how = (
             f"they meet only while {turning} still turns in legs (a three-point turn), before its last change "
-            "of gear; a crash is planned on its last forward leg or after it, never on a reverse leg"
+            "of gear, and on no leg of it, driven forward or reversing, do they meet as the crash type needs"
         )
     message = (
         f"on {match.site.id}, {striker.participant.id} cannot strike {victim.participant.id} as a {crash.value} "

@@ -94,14 +94,21 @@ class Contact:
 
 
 def contacts(
-    striker: Route, victim: Route, crash: CrashType, *, whole: bool = False, lines: Lines | None = None
+    striker: Route,
+    victim: Route,
+    crash: CrashType,
+    *,
+    whole: bool = False,
+    lines: Lines | None = None,
+    sides: bool = False,
 ) -> list[Contact]:
     """Every contact the crash type accepts, best first. A participant that turns in legs (a
     three-point turn) meets the other only after its last change of gear: the crash is on a
     forward leg and the solver puts it on the last one. A striker backing at the end of its route
     meets the victim with its rear, the line `body.length` behind its front bumper along the way it
     faces. `whole`: on the whole lines (to tell why there is no contact). `lines`: the pair's views
-    and distances already made, for a caller asking of the same two routes more than once."""
+    and distances already made, for a caller asking of the same two routes more than once. `sides`:
+    a side crash met at each of TURNING_SIDE's places on the victim's side, whoever turns in legs."""
     lines = lines if lines is not None else Lines(striker, victim)
     assert lines.striker is striker and lines.victim is victim
     backing = striker.backs_at_end
@@ -124,7 +131,7 @@ def contacts(
         lead = striker.body.length if backing else 0.0
         mine = lines.view(striker, "turns", lead) if striker.manoeuvres else lines.view(striker, "front")
         found = []
-        for face in TURNING_SIDE if side and victim.manoeuvres else (FACE[named],):
+        for face in TURNING_SIDE if side and (victim.manoeuvres or sides) else (FACE[named],):
             fronts: _View | None = None  # the victim's front bumper's line, when it has one
             if victim.manoeuvres:  # the face itself: k is in the view
                 theirs, back = lines.view(victim, "turns", face * victim.body.length), 0.0
@@ -217,7 +224,9 @@ class _View:
         rad = np.radians(headings)
         points = route.line.points_at(s) - back * np.column_stack((np.sin(rad), np.cos(rad)))
         # the lines are compared by the way they run: a backing body runs against the way it faces
-        travel = (headings + 180.0 * np.array([route.backing(float(x)) for x in s])) % 360.0
+        # (and so does one on a reverse leg its route ends in, midturn.py)
+        reverse_leg = route.backs_at_end and not route.manoeuvres[-1].backing
+        travel = (headings + 180.0 * np.array([reverse_leg or route.backing(float(x)) for x in s])) % 360.0
         return cls(points, s - last, travel, route.body, last)
 
 

@@ -178,9 +178,17 @@ class Route:
     @property
     def backs_at_end(self) -> bool:
         """Whether it is reversing on the last stretch of its line, where a crash is planned: it
-        leads with its rear there (every crash type then reads with the striker's rear as its front)."""
+        leads with its rear there (every crash type then reads with the striker's rear as its front).
+        Backing along the road, or on a reverse leg of a turn in legs cut there (midturn.py)."""
         last = self.manoeuvres[-1] if self.manoeuvres else None
-        return last is not None and last.backing and last.hi >= self.line.length - 1e-6
+        return last is not None and (last.backing or last.gears[-1] < 0) and last.hi >= self.line.length - 1e-6
+
+    @property
+    def ends_in_legs(self) -> bool:
+        """Whether its line ends within a turn in legs (cut where a leg ends, midturn.py): it stands
+        there, at the change of gear, once it has driven its line."""
+        last = self.manoeuvres[-1] if self.manoeuvres else None
+        return last is not None and not last.backing and last.hi >= self.line.length - 1e-6
 
     def stops(self) -> list[Event]:
         """The places it stands, in order along the line: its stop actions and those of its turns."""

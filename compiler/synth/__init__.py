@@ -79,6 +79,8 @@ def _trajectory(
     limits = model(route.body).limits
     profile = knots(legs, start, solution.initial_dwell.get(pid, 0.0), end_time, limits.plan_accel)
     s, v, fallbacks = sample(profile, times)
+    if route.ends_in_legs:  # cut where the leg it is met on ends (lower/midturn.py): it stands there
+        s, v = _brakes_after(times, s, v, solution.impact_time, route.line.length, limits.stop_decel)
     if fallbacks:
         notes.append(f"{pid}: {fallbacks} timing pieces kept constant acceleration (no jerk-limited fit)")
     samples = []
@@ -109,12 +111,30 @@ def _trajectory(
     )
 
 
+def _brakes_after(
+    times: np.ndarray, s: np.ndarray, v: np.ndarray, t_hit: float, end: float, decel: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The profile from the impact on braking at `decel` (harder if it must) to stand by arc length
+    `end`, where the leg of a turn it was met on ends: the crash, not a change of gear, stops it."""
+    after = times > t_hit
+    if not after.any():
+        return s, v
+    s0, v0 = float(np.interp(t_hit, times, s)), float(np.interp(t_hit, times, v))
+    rate = max(decel, v0 * v0 / (2.0 * max(end - s0, 1e-6)))
+    tau = np.minimum(times[after] - t_hit, v0 / rate)
+    s, v = s.copy(), v.copy()
+    s[after] = np.minimum(s0 + v0 * tau - rate * tau * tau / 2.0, end)
+    v[after] = v0 - rate * tau
+    return s, v
+
+
 def _check_drivable(pid: str, path: RoutePath, s: np.ndarray, v: np.ndarray, lowered: Lowered) -> None:
     """TOPP-RA's envelope on the path, every metre of the driven stretch, over the planned speeds;
     leg by leg where a three-point turn stops (its path turns back on the spot there)."""
     upto = lowered.solution.impact.get(pid)
     if upto is not None:  # what it would drive after the crash is not driven: not judged
-        keep = s <= upto + AFTER_CRASH
+        # nor past it on a turn's leg cut there (lower/midturn.py): the crash, not the car, stops it
+        keep = s <= upto + (0.0 if path.route.ends_in_legs else AFTER_CRASH)
         s, v = s[keep], v[keep]
     if len(s) < 2 or s[-1] - s[0] < 2.0:
         return  # it (almost) never moves
