@@ -205,7 +205,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            # ("entered V1's lane": enter takes the place entered as its object, with no "into")
+            r"\b(?:(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            r"|enter(?:ed|ing|s)? )"
             r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
             r"|the (?:center|centre|middle) (?:travel )?lane)\b"
             # back into a lane it had left ("exited the bus lane ... reentered the bus lane"): not the travel lane,
@@ -424,6 +426,8 @@ def _found(
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
                 if act is ActionKind.STOP and (inside := next((a for a, b in left_from if a < m.start() < b), None)):
                     at = piece.at + inside - 1
+                if act is ActionKind.CHANGE_LANE and (named := _lane_change_said(found, piece, to)) is not None:
+                    at = named  # "was changing lanes ..., it entered V1's lane": one move, said first there
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
@@ -439,6 +443,21 @@ def _found(
     if meant is not None:  # one meant to turn and drove into the junction: that is its turn
         found = [(at, Action(meant) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
     return found
+
+
+def _lane_change_said(found: list[tuple[int, Action]], piece: Piece, to: Side | None) -> int | None:
+    """Where a lane change to the same side (or none said) was read earlier in the same piece: one read after it
+    there is that move, ended ("As V2 was changing lanes, it entered V1's lane"), not a second one."""
+    return next(
+        (
+            at
+            for at, a in found
+            if a.kind is ActionKind.CHANGE_LANE
+            and (a.to is None or to is None or a.to == to)
+            and piece.at <= at < piece.at + len(piece.text)
+        ),
+        None,
+    )
 
 
 def _planned_turn(pieces: list[Piece], road: RoadKind | Unknown) -> tuple[int, ActionKind] | None:

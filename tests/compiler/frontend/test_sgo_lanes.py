@@ -1,0 +1,44 @@
+"""A partner's move into the automated vehicle's lane (issue 18, sgo8), on sentences written for these tests:
+"entered V1's lane" is a lane change as "moved into V1's lane" is, and a lane change said twice in one clause
+chain ("was changing lanes ..., it entered V1's lane") is one move."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.dsl.ir import ActionKind, Participant, Scenario
+from sovarc.dsl.span import Source
+
+
+def read(text: str) -> Scenario:
+    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
+
+
+def kinds(p: Participant) -> list[ActionKind]:
+    assert isinstance(p.actions, tuple)
+    return [a.kind for a in p.actions]
+
+
+def by_id(s: Scenario, pid: str) -> Participant:
+    return next(p for p in s.participants if p.id == pid)
+
+
+@pytest.mark.parametrize("verb", ["entered", "partially entered", "moved into"])
+def test_entering_the_other_vehicles_lane_is_a_lane_change(verb: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan on Pine Avenue. The Waymo AV was traveling "
+        "south on Pine Avenue in the right lane. A sedan traveling south in the left lane beside the Waymo AV "
+        f"drove through the intersection and {verb} the Waymo AV's lane. The right side of the sedan made contact "
+        "with the left side of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.CHANGE_LANE
+
+
+def test_a_lane_change_said_again_as_entering_the_lane_is_one_move() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a van on Pine Avenue. The Waymo AV was traveling "
+        "west on Pine Avenue in the rightmost lane. A van in the leftmost lane began to cross the lanes to turn "
+        "right into a driveway. As the van was changing lanes and beginning the right turn, it entered the Waymo "
+        "AV's lane of travel, and the right rear of the van made contact with the front left of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.TURN_RIGHT
