@@ -17,7 +17,7 @@ import re
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
-from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
+from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
@@ -426,7 +426,10 @@ def _found(
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
                 if act is ActionKind.STOP and (inside := next((a for a, b in left_from if a < m.start() < b), None)):
                     at = piece.at + inside - 1
-                if act is ActionKind.CHANGE_LANE and (named := _lane_change_said(found, piece, to)) is not None:
+                if (
+                    act is ActionKind.CHANGE_LANE
+                    and (named := said_in_piece(found, piece.at, len(piece.text), to)) is not None
+                ):
                     at = named  # "was changing lanes ..., it entered V1's lane": one move, said first there
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
@@ -443,21 +446,6 @@ def _found(
     if meant is not None:  # one meant to turn and drove into the junction: that is its turn
         found = [(at, Action(meant) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
     return found
-
-
-def _lane_change_said(found: list[tuple[int, Action]], piece: Piece, to: Side | None) -> int | None:
-    """Where a lane change to the same side (or none said) was read earlier in the same piece: one read after it
-    there is that move, ended ("As V2 was changing lanes, it entered V1's lane"), not a second one."""
-    return next(
-        (
-            at
-            for at, a in found
-            if a.kind is ActionKind.CHANGE_LANE
-            and (a.to is None or to is None or a.to == to)
-            and piece.at <= at < piece.at + len(piece.text)
-        ),
-        None,
-    )
 
 
 def _planned_turn(pieces: list[Piece], road: RoadKind | Unknown) -> tuple[int, ActionKind] | None:
