@@ -17,6 +17,7 @@ import re
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
+from sovarc.compiler.frontend.retold import under_way_at_impact
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.turnpath import crossed_in_turn
@@ -528,7 +529,7 @@ def read_actions_at(
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
-    found = resumed(sorted(found, key=lambda item: item[0]), pieces)
+    found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
     # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see _DRIVING_ON).
