@@ -186,7 +186,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
-            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            r"|\bpass(?:ed|es)\b|\bovert(?:ook|akes)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
             # closing on another from behind (see _DRIVING_ON)
@@ -207,7 +207,9 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.CHANGE_LANE,
         re.compile(
             # ("entered V1's lane": enter takes the place entered as its object, with no "into")
-            r"\b(?:(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            # ("encroached into V1's lane": to intrude into another's space; "drifted right into V1's lane")
+            r"\b(?:(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel|encroach)\w* (?:over |left |right )?"
+            r"(?:in)?to "
             r"|enter(?:ed|ing|s)? )"
             r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
             r"|the (?:center|centre|middle) (?:travel )?lane)\b"

@@ -63,3 +63,22 @@ def test_what_a_retold_turn_is_said_to_be_stays_the_turns_own() -> None:
         "sedan made contact with the front of the Waymo AV."
     )
     assert kinds(by_id(s, "V2"))[-1] is ActionKind.RETROGRADE
+
+
+@pytest.mark.parametrize("move", ["encroached into the Waymo AV's lane", "drifted right into the Waymo AV's lane"])
+def test_intruding_or_drifting_sideways_into_the_other_vehicles_lane_is_a_lane_change(move: str) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan on Pine Avenue. The Waymo AV was traveling "
+        f"north on Pine Avenue in the right lane. A sedan traveling in the left lane {move}. The right side of the "
+        "sedan made contact with the left side of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is ActionKind.CHANGE_LANE
+
+
+def test_one_that_overtook_drove_on_past() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan on Pine Avenue. The Waymo AV was stopped "
+        "at the curb on Pine Avenue. A sedan overtook the Waymo AV on the left. The right side of the sedan made "
+        "contact with the left rear of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2")) == [ActionKind.FOLLOW_LANE]
