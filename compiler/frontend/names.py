@@ -26,6 +26,7 @@ _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
     r"tractor[- ]trailer|school bus|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
+    r"taxicab|taxi|convertible|limousine|ambulance|"  # (the nouns kinds.py knows, and vehicles of a trade)
     r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
 )
 _PEOPLE = frozenset(("pedestrian",))

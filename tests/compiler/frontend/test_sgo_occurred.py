@@ -1,8 +1,10 @@
-"""A partner named where the report says only that a collision occurred (issue 18, sgo8), on sentences written for
+"""A partner named where the report says only that a collision occurred, or by a noun for a vehicle of a trade ("a
+taxi", "an ambulance") (issue 18, sgo8), on sentences written for
 these tests; and a road user's words broken across a line, as narratives wrapped at a fixed width break them."""
 
 from __future__ import annotations
 
+import pytest
 from sovarc.compiler.frontend import FrontEnd
 from sovarc.dsl.ir import ActionKind, Participant, Scenario, VehicleKind
 from sovarc.dsl.span import Source
@@ -36,3 +38,27 @@ def test_a_road_users_words_broken_across_a_line_are_still_its_words() -> None:
     )
     v2 = by_id(s, "V2")
     assert isinstance(v2.actions, tuple) and v2.actions[-1].kind is ActionKind.REVERSE
+
+
+@pytest.mark.parametrize(
+    ("words", "kind"),
+    [("a taxi", VehicleKind.CAR), ("a limousine", VehicleKind.CAR), ("a convertible", VehicleKind.CAR)],
+)
+def test_a_partner_named_by_any_noun_for_a_vehicle_is_found(words: str, kind: VehicleKind) -> None:
+    s = read(
+        f"A Waymo Autonomous Vehicle was in a collision involving {words} on Pine Avenue. The Waymo AV was stopped "
+        f"at a red light on northbound Pine Avenue. {words.capitalize()} traveling north behind the Waymo AV made "
+        "contact with the rear of the Waymo AV."
+    )
+    v2 = by_id(s, "V2")
+    assert v2.kind is kind
+    assert isinstance(v2.actions, tuple) and v2.actions[-1].kind is ActionKind.FOLLOW_LANE
+
+
+def test_an_ambulance_is_a_road_user() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving an ambulance on Pine Avenue. The Waymo AV was "
+        "stopped on northbound Pine Avenue. An ambulance traveling north behind the Waymo AV made contact with the "
+        "rear of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
