@@ -223,7 +223,8 @@ _MAKE = re.compile(
     # (or as the subject of a clause: "At this time, a Chevrolet Camaro ... reversed")
     r"(?:\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into|when|as|while)\s+|^|[,;]\s+)"
     r"(?P<words>(?:[Aa]n?|[Aa]nother)\s+"
-    r"(?:[a-z][\w-]*\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
+    # (its model year before it too: "a 2015 Honda Civic")
+    r"(?:(?:[a-z][\w-]*|(?:19|20)\d\d)\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
 )
 
 

@@ -62,3 +62,12 @@ def test_an_ambulance_is_a_road_user() -> None:
         "rear of the Waymo AV."
     )
     assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+def test_a_partner_named_by_model_year_and_make_is_found() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision on Pine Avenue. The Waymo AV was stopped at a red light on "
+        "northbound Pine Avenue when a 2015 Honda Civic traveling north behind the Waymo AV made contact with the "
+        "rear of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
