@@ -121,7 +121,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|parked)"
-            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|pull(?:ed|ing)? out of|proceed(?:ed|ing)? out of"
+            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|emerg(?:ed|ing|es) from|pull(?:ed|ing)? out of"
+            r"|proceed(?:ed|ing)? out of"
             r"|(?<!backed )(?<!backing )(?<!reversed )(?<!reversing )out of) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"

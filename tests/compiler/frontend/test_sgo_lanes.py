@@ -82,3 +82,11 @@ def test_one_that_overtook_drove_on_past() -> None:
         "contact with the left rear of the Waymo AV."
     )
     assert kinds(by_id(s, "V2")) == [ActionKind.FOLLOW_LANE]
+
+
+def test_one_emerging_from_an_alley_entered_the_road() -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was in a collision involving a sedan on Pine Avenue. The Waymo AV was traveling "
+        "north on Pine Avenue. A sedan emerging from an alley made contact with the right side of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2")) == [ActionKind.DRIVE_INTO]
