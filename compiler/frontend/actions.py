@@ -17,7 +17,8 @@ import re
 from sovarc.compiler.frontend.clauses import Piece
 from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
-from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change
+from sovarc.compiler.frontend.retold import under_way_at_impact
+from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
 from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
@@ -120,7 +121,8 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|parked)"
-            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|pull(?:ed|ing)? out of|proceed(?:ed|ing)? out of"
+            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|emerg(?:ed|ing|es) from|pull(?:ed|ing)? out of"
+            r"|proceed(?:ed|ing)? out of"
             r"|(?<!backed )(?<!backing )(?<!reversed )(?<!reversing )out of) (?:a|the|an|its) (?:private )?"
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
@@ -185,7 +187,7 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
             # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
             r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
-            r"|\bpass(?:ed|es)\b|\bproceed(?:ed|s)? to\b"
+            r"|\bpass(?:ed|es)\b|\bovert(?:ook|akes)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
             # closing on another from behind (see _DRIVING_ON)
@@ -205,7 +207,11 @@ _PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel)\w* (?:over )?(?:in)?to "
+            # ("entered V1's lane": enter takes the place entered as its object, with no "into")
+            # ("encroached into V1's lane": to intrude into another's space; "drifted right into V1's lane")
+            r"\b(?:(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel|encroach)\w* (?:over |left |right )?"
+            r"(?:in)?to "
+            r"|enter(?:ed|ing|s)? )"
             r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
             r"|the (?:center|centre|middle) (?:travel )?lane)\b"
             # back into a lane it had left ("exited the bus lane ... reentered the bus lane"): not the travel lane,
@@ -424,6 +430,11 @@ def _found(
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
                 if act is ActionKind.STOP and (inside := next((a for a, b in left_from if a < m.start() < b), None)):
                     at = piece.at + inside - 1
+                if (
+                    act is ActionKind.CHANGE_LANE
+                    and (named := said_in_piece(found, piece.at, len(piece.text), to)) is not None
+                ):
+                    at = named  # "was changing lanes ..., it entered V1's lane": one move, said first there
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
@@ -521,7 +532,7 @@ def read_actions_at(
     turning = kinds & set(_MANOEUVRES)
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
-    found = resumed(sorted(found, key=lambda item: item[0]), pieces)
+    found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
     # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see _DRIVING_ON).

@@ -35,7 +35,7 @@ _HEADS: tuple[tuple[VehicleKind, str], ...] = (
     (
         VehicleKind.CAR,
         r"passenger (?:cars?|vehicles?)|sedans?|coupes?|hatchbacks?|station wagons?|wagons?|convertibles?|suvs?"
-        r"|sport utility vehicles?|crossovers?|jeeps?|taxis?|taxicabs?|cars?",
+        r"|sport utility vehicles?|crossovers?|jeeps?|taxis?|taxicabs?|limousines?|cars?",
     ),
 )
 _HEAD = [(kind, re.compile(r"\b(?:" + pattern + r")\b(?![\w-])", re.I)) for kind, pattern in _HEADS]

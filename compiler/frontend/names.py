@@ -26,6 +26,7 @@ _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
     r"tractor[- ]trailer|school bus|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
+    r"taxicab|taxi|convertible|limousine|ambulance|"  # (the nouns kinds.py knows, and vehicles of a trade)
     r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
 )
 _PEOPLE = frozenset(("pedestrian",))
@@ -87,6 +88,7 @@ _IMPACT = re.compile(
 )
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
 _SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
+_OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
 THING = re.compile(
     r"\b(?:an?|the) " + _MODS + r"(animal|dog|cat|deer|bird|pole|tree|bollard|curb|barrier|debris|tire shreds|"
@@ -108,7 +110,7 @@ def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) 
         # only; an automated vehicle's operator does not write so, and SGO's held-out scoring dropped with it)
         + (r"|" + bare(re.escape(phrase)) if introduced else "")
         + r")"
-        + re.escape(phrase)
+        + r"\s+".join(map(re.escape, phrase.split()))  # (a line may break inside it: "passenger\nvehicle")
         + after
         + r"\b(?![\w-])"
         + _NOT_USER,
@@ -221,7 +223,8 @@ _MAKE = re.compile(
     # (or as the subject of a clause: "At this time, a Chevrolet Camaro ... reversed")
     r"(?:\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into|when|as|while)\s+|^|[,;]\s+)"
     r"(?P<words>(?:[Aa]n?|[Aa]nother)\s+"
-    r"(?:[a-z][\w-]*\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
+    # (its model year before it too: "a 2015 Honda Civic")
+    r"(?:(?:[a-z][\w-]*|(?:19|20)\d\d)\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"
 )
 
 
@@ -235,7 +238,10 @@ def _others(text: str) -> list[tuple[str, str]]:
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
     impacts = [i for i in impacts if i >= narrative_start(sents)] or impacts  # (not a filing's note)
     summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
-    for i in impacts + summaries:
+    # a meeting said only as a collision that happened to V1 ("Though V1 had nearly stopped, a collision still
+    # occurred, causing damage to the rear of the passenger vehicle"): its other party is named there or before
+    occurred = [i for i, s in enumerate(sents) if _OCCURRED.search(s) and re.search(r"\bV1\b", s)]
+    for i in impacts + summaries + occurred:
         # "After the pedestrians had crossed, an SUV ... made contact": an opening clause sets the scene
         sentence = sents[i]
         if (scene := _SCENE_CLAUSE.match(sentence)) and _IMPACT.search(sentence[scene.end() :]):

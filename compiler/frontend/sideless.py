@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from sovarc.dsl.ir import Action, ActionKind
+from sovarc.dsl.ir import Action, ActionKind, Side
 
 _NAMED = re.compile(r"\b(?:chang|switch)\w* lanes?\b|\blane[- ]chang|\bmerg(?:es?|ed|ing)\b", re.I)
 
@@ -30,3 +30,18 @@ def one_lane_change(found: list[tuple[int, Action]]) -> list[tuple[int, Action]]
     if not any(a.kind is ActionKind.CHANGE_LANE and a.to is not None for _, a in found):
         return found
     return [(at, a) for at, a in found if not a.sideless]
+
+
+def said_in_piece(found: list[tuple[int, Action]], start: int, length: int, to: Side | None) -> int | None:
+    """Where a lane change to the same side (or none said) was read earlier in one piece (`start`, `length`): one
+    read after it there is that move, ended ("As V2 was changing lanes, it entered V1's lane"), not a second."""
+    return next(
+        (
+            at
+            for at, a in found
+            if a.kind is ActionKind.CHANGE_LANE
+            and (a.to is None or to is None or a.to == to)
+            and start <= at < start + length
+        ),
+        None,
+    )
