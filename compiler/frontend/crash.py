@@ -13,6 +13,7 @@ import re
 from dataclasses import replace
 
 from sovarc.compiler.frontend.clauses import is_object
+from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, DIRECT, INTO_ANYTHING, Form, forms, striking, struck
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
@@ -31,12 +32,13 @@ MOVED_INTO = (
     r"(?= (?:the |its |his |her )?(?:(?:stationary|stopped|parked) )?[VP]\d\b(?!'s (?:lane|path))"
     r"| (?:the |its |his |her |[VP]\d's )?" + _PART + r"\b(?! (?:lane|path)))"
 )
-# A glancing blow is a strike too: "sideswiped", "clipped", "grazed", "brushed against", "scraped".
-_GLANCING = r"side-?swip(?:ed|ing|es)|clipp(?:ed|ing)|graz(?:ed|ing)|(?:brush|scrap)(?:ed|ing)(?: against)?"
-_STRIKE = (
-    r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?|" + _GLANCING + "|" + MOVED_INTO + ")"
-)
+# An active strike (`lexicon.striking`: glancing blows too, "sideswiped", "brushed against"), or a move into a
+# road user or a part of one.
+_STRIKE = "(?:" + striking() + "|" + INTO_ANYTHING + "|" + MOVED_INTO + ")"
+# the participles of a passive strike
+_STRUCK = struck()
+# the "-ing" form and past of a strike that takes its object straight after it ("striking its rear bumper")
+_STRIKING = forms((Form.ING,), DIRECT)
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
 _OWNED = [
@@ -61,26 +63,29 @@ _OWN_PART = re.compile(
     + _PART
     + r")\b"
     r"(?![- ](?:" + _WORD + r"|of)\b)"
-    r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
+    r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) " + _STRUCK,
     re.I,
 )
 # "its" after a contact, after a strike's participle ("struck V1, striking its rear bumper"), or after a strike's
 # object ("struck V1 at its rear bumper") is the object's
 # (not "contacting it's front to the left side of V2": a part the subject puts to the other is its own)
 _OBJECT_ITS = re.compile(
-    r"\b(?:(?:contact|collided|collision) with|striking|hitting|impacting"
-    r"|(?:struck|hit|impacted|contacted|striking|hitting) (?:the )?" + _V + r",? (?:at|in|on))"
+    r"\b(?:(?:contact|collided|collision) with|"
+    + _STRIKING
+    + "|"
+    + BEFORE_OBJECT
+    + " (?:the )?"
+    + _V
+    + r",? (?:at|in|on))"
     r" (?:its|his|her|it's) (?P<part>" + _PART + r")\b(?![- ]" + _WORD + r"\b)(?! (?:to|into|against|with)\b)",
     re.I,
 )
-# the participles of a passive strike
-_STRUCK = r"(?:struck|hit|impacted|contacted|rear-ended|side-?swiped|clipped|grazed|brushed|scraped)"
 _AGENT = re.compile(
     r"\b" + _STRUCK + r"\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
     r"(?P<v>" + _V + r")\b",
     re.I,
 )
-_AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
+_AGENT_OWNED = re.compile(r"\b" + _STRUCK + r"\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?" + _STRUCK + r"\b", re.I)
