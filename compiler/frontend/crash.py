@@ -37,7 +37,7 @@ MOVED_INTO = (
 _STRIKE = "(?:" + striking() + "|" + INTO_ANYTHING + "|" + MOVED_INTO + ")"
 # the participles of a passive strike
 _STRUCK = struck()
-# the "-ing" form and past of a strike that takes its object straight after it ("striking its rear bumper")
+# the "-ing" form of a strike that takes its object straight after it ("striking its rear bumper")
 _STRIKING = forms((Form.ING,), DIRECT)
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
