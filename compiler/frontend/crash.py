@@ -13,7 +13,16 @@ import re
 from dataclasses import replace
 
 from sovarc.compiler.frontend.clauses import is_object
-from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, DIRECT, INTO_ANYTHING, Form, forms, striking, struck
+from sovarc.compiler.frontend.lexicon import (
+    BEFORE_OBJECT,
+    DIRECT,
+    IMPACT_VERBS,
+    INTO_ANYTHING,
+    Form,
+    forms,
+    striking,
+    struck,
+)
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
@@ -104,10 +113,22 @@ _FOLLOWER = (
 # only avoiding it denies it, which `text` reads as no impact.
 _NOT_AVOIDED = re.compile(
     r"\b(?:(?:was|were) unable to|failed to|could not|couldn't|did not|didn't) (?:fully )?avoid "
-    r"(?P<met>(?:making )?contact with|a collision with|colliding with|striking|hitting|impacting)",
+    r"(?P<met>(?:making )?contact with|a collision with|" + striking((Form.ING,)) + ")",
     re.I,
 )
-_MADE = {"striking": "struck", "hitting": "hit", "impacting": "impacted", "colliding with": "collided with"}
+# the "-ing" form of each verb of impact, and its past (a compound in each spelling: "side-swiping", "sideswiping")
+_PAST_OF_ING = {
+    v.ing.replace("-", j): v.past.replace("-", j) for v in IMPACT_VERBS if " " not in v.base for j in ("-", "", " ")
+}
+
+
+def _made(met: str) -> str:
+    """The strike not avoided, said in the past: "striking" -> "struck", "colliding with" -> "collided with"."""
+    low = met.lower()
+    ing = next((w for w in sorted(_PAST_OF_ING, key=len, reverse=True) if low.startswith(w)), None)
+    return _PAST_OF_ING[ing] + met[len(ing) :] if ing else "made contact with"
+
+
 _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 
@@ -317,7 +338,7 @@ def read_sentence(
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
     # An impact its subject could not avoid is one it made: "V1 ... was unable to avoid contact with V2"
-    sentence = _NOT_AVOIDED.sub(lambda m: _MADE.get(m.group("met").lower(), "made contact with"), sentence)
+    sentence = _NOT_AVOIDED.sub(lambda m: _made(m.group("met")), sentence)
     # A sentence opening on a pronoun is about the one it carries on with ("V1 stopped. It then proceeded to turn
     # and struck V2"): the pronoun is that participant, the subject of every verb it heads.
     if carry is not None and (opening := re.match(r"(?:It|He|She)\b(?!')", sentence)):

@@ -73,3 +73,8 @@ def test_active_and_passive_forms() -> None:
 def test_a_strike_told_in_the_present_is_read_in_the_past() -> None:
     assert in_past("V2 sideswipes V1. V1 is grazed by V3.") == "V2 sideswiped V1. V1 was grazed by V3."
     assert read_sentence("V2 bumped the rear of V1.") == Crash(CrashType.REAR_END, "V2", "V1")
+
+
+def test_a_strike_not_avoided_is_made_in_any_verb() -> None:
+    assert read_sentence("V2 could not avoid sideswiping V1.") == Crash(CrashType.SIDE, "V2", "V1")
+    assert read_sentence("V2 failed to avoid colliding with the rear of V1.") == Crash(CrashType.REAR_END, "V2", "V1")
