@@ -57,8 +57,8 @@ class Verb:
     base_reads: BaseReads = BaseReads.OTHER
 
     def said(self, form: Form) -> str:
-        """The form as a regular expression: a compound is joined, hyphenated or, but in its base (where two
-        words are the noun: "the rear end", "a side swipe"), written apart."""
+        """The form as a regular expression: a compound may be joined, hyphenated or written apart ("rear
+        ended"), but not apart in its base, where two words are the noun ("the rear end", "a side swipe")."""
         word = re.escape(getattr(self, form.value)).replace(r"\ ", " ")
         return word.replace(r"\-", "-?" if form is Form.BASE else "[- ]?")
 
