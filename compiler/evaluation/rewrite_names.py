@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from sovarc.compiler.frontend.sentences import opens_sentence
+
 WORDS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
 ORDINALS = ("zeroth", "first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth")
 DIGIT_OF = {w: i for i, w in enumerate(WORDS)}
@@ -27,14 +29,9 @@ VEHICLE = re.compile(
 )
 
 
-def starts_sentence(text: str, at: int) -> bool:
-    """Whether `at` opens a sentence of `text` (what a rewrite writes there takes a capital)."""
-    return re.search(r"(?:^|[.!?])\s*$", text[:at]) is not None
-
-
 def cased(words: str, text: str, at: int) -> str:
     """`words`, capitalised where they open a sentence of `text` at `at`."""
-    return words[0].upper() + words[1:] if starts_sentence(text, at) else words
+    return words[0].upper() + words[1:] if opens_sentence(text, at) else words
 
 
 def through_v(rewrite: Callable[[str], str]) -> Callable[[str], str]:

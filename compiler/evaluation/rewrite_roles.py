@@ -17,7 +17,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from sovarc.compiler.evaluation.rewrite_names import cased, renamed, starts_sentence
+from sovarc.compiler.evaluation.rewrite_names import cased, renamed
+from sovarc.compiler.frontend.sentences import opens_sentence
 
 _V = renamed(lambda n: f"V{n}")
 # Kind words after a make and model: "a 1997 Dodge Ram pickup", "a 1998 Ford Taurus station wagon".
@@ -96,7 +97,7 @@ def by_descriptions(text: str, intros: dict[str, re.Match[str]], later: Callable
 
 def _introductions(text: str) -> dict[str, re.Match[str]]:
     """Each vehicle's first introduction, "V1, a 2003 Honda Pilot," or a sentence "V1 was a 2003 Honda Pilot"."""
-    found = [*_INTRO_ASIDE.finditer(text), *(m for m in _INTRO_WAS.finditer(text) if starts_sentence(text, m.start()))]
+    found = [*_INTRO_ASIDE.finditer(text), *(m for m in _INTRO_WAS.finditer(text) if opens_sentence(text, m.start()))]
     intros: dict[str, re.Match[str]] = {}
     for m in sorted(found, key=lambda m: m.start()):
         intros.setdefault(m["name"], m)
@@ -147,7 +148,7 @@ def first_person(text: str) -> str:
 
 def _subject(text: str, at: int) -> bool:
     """Whether a name at `at` opens its clause (a sentence, or after a conjunction or a comma)."""
-    return starts_sentence(text, at) or bool(
+    return opens_sentence(text, at) or bool(
         re.search(r"(?:[,;]|\b(?:that|and|but|when|as|while|because|after|before|if|so|then|where))\s*$", text[:at])
     )
 

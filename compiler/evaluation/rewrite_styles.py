@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.evaluation.rewrite_names import renamed, starts_sentence
+from sovarc.compiler.evaluation.rewrite_names import renamed
 from sovarc.compiler.evaluation.rewrite_roles import by_descriptions, introduced_pair, two_vehicles
+from sovarc.compiler.frontend.sentences import opens_sentence
 
 _V = renamed(lambda n: f"V{n}")
 # The kind word a description ends with, and what a terse note calls that kind.
@@ -57,7 +58,7 @@ def bare_names(text: str) -> str:
 
     def later(pid: str, at: int) -> str:
         kind = kinds[pid]
-        return kind[0].upper() + kind[1:] if starts_sentence(v, at) else f"the {kind}"
+        return kind[0].upper() + kind[1:] if opens_sentence(v, at) else f"the {kind}"
 
     return by_descriptions(v, intros, later)
 

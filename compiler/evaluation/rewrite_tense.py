@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.lexicon import IMPACT_VERBS
+
 
 def in_case_of(like: str, word: str) -> str:
     """`word` capitalised as `like` is (a rewritten word that opens a sentence still opens it)."""
@@ -19,7 +21,6 @@ _PRESENT = {
     "was": "is",
     "were": "are",
     "had": "has",
-    "struck": "strikes",
     "came": "comes",
     "made": "makes",
     "began": "begins",
@@ -45,8 +46,6 @@ _PRESENT = {
     "passed": "passes",
     "merged": "merges",
     "approached": "approaches",
-    "impacted": "impacts",
-    "contacted": "contacts",
     "proceeded": "proceeds",
     "traveled": "travels",
     "travelled": "travels",
@@ -54,13 +53,16 @@ _PRESENT = {
     "failed": "fails",
     "departed": "departs",
     "rotated": "rotates",
-    "collided": "collides",
     "occurred": "occurs",
     "looked": "looks",
     "yielded": "yields",
     "moved": "moves",
     "veered": "veers",
 }
+# the verbs of impact as the front end's lexicon writes them ("sideswiped" -> "sideswipes", "hit" -> "hits")
+_PRESENT.update(
+    {v.past.replace("-", j): v.third.replace("-", j) for v in IMPACT_VERBS if " " not in v.base for j in ("-", "")}
+)
 _PAST = re.compile(r"\b(?:" + "|".join(_PRESENT) + r")\b", re.I)
 _PARTICIPLE_AFTER = re.compile(
     r"\b(?:was|were|is|are|be|been|being|had|has|have|a|an|the|to|not|just)\s+(?:\w+ly\s+)?$", re.I

@@ -26,11 +26,11 @@ from sovarc.compiler.evaluation.rewrite_names import (
     WORDS,
     digit,
     renamed,
-    starts_sentence,
     through_v,
 )
 from sovarc.compiler.evaluation.rewrite_police import POLICE
 from sovarc.compiler.evaluation.rewrite_tense import in_case_of, present_tense
+from sovarc.compiler.frontend.sentences import opens_sentence
 
 # "V1's front" -> "the front of V1": the possessive and the of-phrase name the same part.
 _PARTS = (
@@ -46,8 +46,7 @@ def possessive_of(text: str) -> str:
     """ "V2's right front contacted V1" -> "the right front of V2 contacted V1"."""
 
     def of(m: re.Match[str]) -> str:
-        start = m.start() == 0 or re.search(r"[.!?]\s*$", text[: m.start()]) is not None
-        return f"{'The' if start else 'the'} {m.group('part')} of {m.group('name')}"
+        return f"{'The' if opens_sentence(text, m.start()) else 'the'} {m.group('part')} of {m.group('name')}"
 
     return _POSSESSIVE.sub(of, text)
 
@@ -170,7 +169,7 @@ def driver_of(text: str) -> str:
 
     def one(m: re.Match[str]) -> str:
         lead = m.group("lead")
-        the = "The" if starts_sentence(text, m.start("name")) else "the"
+        the = "The" if opens_sentence(text, m.start("name")) else "the"
         return f"{lead}{the} driver of {m.group('name')} {m.group('then') or ''}"
 
     return _VEHICLE_DOES.sub(one, text)

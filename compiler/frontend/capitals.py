@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.sentences import opens_sentence
+
 # A report is in capitals when nearly all its words are: a sentence-case report with a few codes or a shouted
 # word ("the sign said STOP") is not.
 _WORD = re.compile(r"\b[A-Za-z]{2,}\b")
@@ -79,21 +81,14 @@ def sentence_case(text: str) -> str:
         if s in keep:
             continue
         word = m.group().lower()
-        if s in titled or (_starts_sentence(text, s) and s not in latin):
+        if s in titled or (opens_sentence(text, s) and s not in latin):
             word = word[0].upper() + word[1:]
         out[s:e] = word
     return "".join(out)
 
 
-# titles whose full stop ends no sentence: "OFC. SMITH" (before a number, "VEH. 2", no word is capitalised)
-_ABBREVIATED = re.compile(r"\b(?:MR|MRS|MS|DR|SGT|OFC|LT|CPL|DEP|TPR|E\.G|I\.E)\.$", re.I)
 # "E.G.", "I.E.": Latin abbreviations, in lower case (their letters are no labels)
 _LATIN = re.compile(r"\b(?:E\.G|I\.E)\.")
-
-
-def _starts_sentence(text: str, at: int) -> bool:
-    before = text[:at].rstrip().rstrip("\"'(").rstrip()
-    return not before or before[-1] in "!?\n" or (before[-1] == "." and not _ABBREVIATED.search(before[-8:]))
 
 
 def _kept(text: str) -> set[int]:

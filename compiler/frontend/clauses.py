@@ -15,11 +15,14 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT
+
 # Words right before a participant's name that make it an object, not the subject of what follows.
 _OBJECT_BEFORE = re.compile(
     # (a preposition's object: "parked perpendicular to V1", "away from V1")
     r"(?:\b(?:by|with|behind|ahead of|in back of|of|than|to|from|toward|towards|into|onto|past|near|against|"
-    r"struck|hit|impacted|contacted|striking|impacting|contacting|rear-ended|avoid|see|saw|seen|observed|noticed|"
+    + BEFORE_OBJECT
+    + r"|avoid|see|saw|seen|observed|noticed|"
     r"detected|detecting|pass|passed|passing|enter|entered|entering|enters|crossed|crossing|"
     r"followed|following|around|alongside|beside|next to|approached|approaching|overtook|overtaking)|'s) "
     r"(?:the )?(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?$",

@@ -13,6 +13,16 @@ import re
 from dataclasses import replace
 
 from sovarc.compiler.frontend.clauses import is_object
+from sovarc.compiler.frontend.lexicon import (
+    BEFORE_OBJECT,
+    DIRECT,
+    IMPACT_VERBS,
+    INTO_ANYTHING,
+    Form,
+    forms,
+    striking,
+    struck,
+)
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
@@ -31,12 +41,13 @@ MOVED_INTO = (
     r"(?= (?:the |its |his |her )?(?:(?:stationary|stopped|parked) )?[VP]\d\b(?!'s (?:lane|path))"
     r"| (?:the |its |his |her |[VP]\d's )?" + _PART + r"\b(?! (?:lane|path)))"
 )
-# A glancing blow is a strike too: "sideswiped", "clipped", "grazed", "brushed against", "scraped".
-_GLANCING = r"side-?swip(?:ed|ing|es)|clipp(?:ed|ing)|graz(?:ed|ing)|(?:brush|scrap)(?:ed|ing)(?: against)?"
-_STRIKE = (
-    r"(?:struck|strikes|striking|hit|hitting|impacted|impacting|contacted|contacting|collided with|rear-end(?:ed|ing)"
-    r"|ran into|crashed into|(?:made|make|makes|making) contact(?: with| to)?|" + _GLANCING + "|" + MOVED_INTO + ")"
-)
+# An active strike (`lexicon.striking`: glancing blows too, "sideswiped", "brushed against"), or a move into a
+# road user or a part of one.
+_STRIKE = "(?:" + striking() + "|" + INTO_ANYTHING + "|" + MOVED_INTO + ")"
+# the participles of a passive strike
+_STRUCK = struck()
+# the "-ing" form of a strike that takes its object straight after it ("striking its rear bumper")
+_STRIKING = forms((Form.ING,), DIRECT)
 # "the rear of the stationary V1": a state said of the owner
 _STATE = r"(?:(?:stationary|stopped|parked|standing|slowing|stopping) )?"
 _OWNED = [
@@ -61,26 +72,29 @@ _OWN_PART = re.compile(
     + _PART
     + r")\b"
     r"(?![- ](?:" + _WORD + r"|of)\b)"
-    r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) (?:struck|hit|impacted|contacted)",
+    r"|\b(?:its|his|her|it's) (?P<part2>" + _PART + r") (?:was|were) " + _STRUCK,
     re.I,
 )
 # "its" after a contact, after a strike's participle ("struck V1, striking its rear bumper"), or after a strike's
 # object ("struck V1 at its rear bumper") is the object's
 # (not "contacting it's front to the left side of V2": a part the subject puts to the other is its own)
 _OBJECT_ITS = re.compile(
-    r"\b(?:(?:contact|collided|collision) with|striking|hitting|impacting"
-    r"|(?:struck|hit|impacted|contacted|striking|hitting) (?:the )?" + _V + r",? (?:at|in|on))"
+    r"\b(?:(?:contact|collided|collision) with|"
+    + _STRIKING
+    + "|"
+    + BEFORE_OBJECT
+    + " (?:the )?"
+    + _V
+    + r",? (?:at|in|on))"
     r" (?:its|his|her|it's) (?P<part>" + _PART + r")\b(?![- ]" + _WORD + r"\b)(?! (?:to|into|against|with)\b)",
     re.I,
 )
-# the participles of a passive strike
-_STRUCK = r"(?:struck|hit|impacted|contacted|rear-ended|side-?swiped|clipped|grazed|brushed|scraped)"
 _AGENT = re.compile(
     r"\b" + _STRUCK + r"\b[^.;]{0,60}?\bby (?:the )?(?:(?:" + _PART + r") of (?:the )?)?"
     r"(?P<v>" + _V + r")\b",
     re.I,
 )
-_AGENT_OWNED = re.compile(r"\b(?:struck|hit|impacted|contacted)\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
+_AGENT_OWNED = re.compile(r"\b" + _STRUCK + r"\b[^.;]{0,60}?\bby (?P<v>" + _V + r")'s\b", re.I)
 _ACTIVE = re.compile(r"\b" + _STRIKE + r"\b(?! by)", re.I)
 _PRONOUN_ACTIVE = re.compile(r"\b(?:it|he|she)\b (?:then |\w+ly )?" + _STRIKE + r"\b(?! by)", re.I)
 _PASSIVE = re.compile(r"\b(?:was|were|is|got|been) (?:\w+ )?" + _STRUCK + r"\b", re.I)
@@ -99,10 +113,22 @@ _FOLLOWER = (
 # only avoiding it denies it, which `text` reads as no impact.
 _NOT_AVOIDED = re.compile(
     r"\b(?:(?:was|were) unable to|failed to|could not|couldn't|did not|didn't) (?:fully )?avoid "
-    r"(?P<met>(?:making )?contact with|a collision with|colliding with|striking|hitting|impacting)",
+    r"(?P<met>(?:making )?contact with|a collision with|" + striking((Form.ING,)) + ")",
     re.I,
 )
-_MADE = {"striking": "struck", "hitting": "hit", "impacting": "impacted", "colliding with": "collided with"}
+# the "-ing" form of each verb of impact, and its past (a compound in each spelling: "side-swiping", "sideswiping")
+_PAST_OF_ING = {
+    v.ing.replace("-", j): v.past.replace("-", j) for v in IMPACT_VERBS if " " not in v.base for j in ("-", "", " ")
+}
+
+
+def _made(met: str) -> str:
+    """The strike not avoided, said in the past: "striking" -> "struck", "colliding with" -> "collided with"."""
+    low = met.lower()
+    ing = next((w for w in sorted(_PAST_OF_ING, key=len, reverse=True) if low.startswith(w)), None)
+    return _PAST_OF_ING[ing] + met[len(ing) :] if ing else "made contact with"
+
+
 _RIGHT_ANGLE = re.compile(r"\bright angle\b|\bbroadside|\bt-?boned?\b", re.I)
 
 
@@ -312,7 +338,7 @@ def read_sentence(
     # "rear ended", "rear-ending": one verb however it is spelt
     sentence = re.sub(r"\brear[- ]end(ed|ing)\b", r"rear-end\1", sentence, flags=re.I)
     # An impact its subject could not avoid is one it made: "V1 ... was unable to avoid contact with V2"
-    sentence = _NOT_AVOIDED.sub(lambda m: _MADE.get(m.group("met").lower(), "made contact with"), sentence)
+    sentence = _NOT_AVOIDED.sub(lambda m: _made(m.group("met")), sentence)
     # A sentence opening on a pronoun is about the one it carries on with ("V1 stopped. It then proceeded to turn
     # and struck V2"): the pronoun is that participant, the subject of every verb it heads.
     if carry is not None and (opening := re.match(r"(?:It|He|She)\b(?!')", sentence)):

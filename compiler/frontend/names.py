@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.kinds import kind_named
+from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETING_NOUNS, stems
 from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
@@ -80,12 +81,8 @@ _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\baut
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
 _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LABEL.pattern, re.I)
 # ("the contact area", "the point of impact area": a place on a body, the name of a form's field, not a meeting)
-_IMPACT = re.compile(
-    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*(?! (?:areas?|points?|zones?)\b)|collid\w+|hit|"
-    r"crash\w+ into|rear[- ]end\w*|"
-    r"clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
-    re.I,
-)
+# (not "a collision": a summary's, `_SUMMARY`, read only where no sentence says how the parties met)
+_IMPACT = re.compile(r"\b(?:" + stems(MEETING_NOUNS) + "|" + INTO_ANYTHING + r")\b", re.I)
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
 _SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
 _OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
@@ -221,7 +218,7 @@ _SCENE_CLAUSE = re.compile(r"^(?:After|As|While|When|Before|Once|Just after|Foll
 # Civic" (capitalised and not an acronym, which would be a system's name: "an ADS").
 _MAKE = re.compile(
     # (or as the subject of a clause: "At this time, a Chevrolet Camaro ... reversed")
-    r"(?:\b(?:by|struck|hit|hitting|striking|contacted|contacting|with|into|when|as|while)\s+|^|[,;]\s+)"
+    r"(?:\b(?:by|" + BEFORE_OBJECT + r"|with|into|when|as|while)\s+|^|[,;]\s+)"
     r"(?P<words>(?:[Aa]n?|[Aa]nother)\s+"
     # (its model year before it too: "a 2015 Honda Civic")
     r"(?:(?:[a-z][\w-]*|(?:19|20)\d\d)\s+){0,2}?([A-Z][\w-]*[a-z][\w-]*(?: [A-Z][\w-]*[a-z][\w-]*)?))\b"

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.choice import FrontEndError
+from sovarc.compiler.frontend.lexicon import INTO_ANYTHING, stems
 from sovarc.compiler.frontend.text import first_impact, prepare, sentences, without_non_impacts
 
 _MONTH = (
@@ -76,11 +77,7 @@ def _blocks_with_impacts(text: str) -> int:
 
 
 # Every way a report says road users met, the rules' readings aside ("clipped", "bumped", "reversed into").
-_IMPACT_WORD = re.compile(
-    r"\b(?:struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*|collid\w+|collision|hit|crash\w+ into|"
-    r"rear[- ]end\w*|clip\w*|scrap\w*|side-?swip\w*|brush\w*|bump\w*|ran into|backed into|reversed into)\b",
-    re.I,
-)
+_IMPACT_WORD = re.compile(r"\b(?:" + stems() + "|" + INTO_ANYTHING + r")\b", re.I)
 
 
 def says_impact(text: str) -> bool:

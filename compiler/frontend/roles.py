@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.sentences import opens_sentence
+
 # The nouns a road user's own vehicle is said with: "my car", "the insured's pickup truck", "her SUV".
 _OWN = r"(?:vehicle|car|auto|automobile|truck|pickup(?: truck)?|van|minivan|suv|sedan|motorcycle|jeep)"
 
@@ -41,13 +43,9 @@ _CLAIMANT_VEHICLE_CASED = re.compile(r"\b(?:the )?(?:CV|OV)\b(?!-)")
 _CLAIMANT = re.compile(r"\b(?:the )?(?:claimant|other party)(?: driver)?\b(?![\w-])", re.I)
 
 
-def _sentence_start(text: str, at: int) -> bool:
-    return bool(re.search(r"(?:^|[.!?]\s*|\n\s*)$", text[:at]))
-
-
 def _sub(pattern: re.Pattern[str], words: str, text: str) -> str:
     """Each match as `words`, capitalised where it opens a sentence."""
-    return pattern.sub(lambda m: words[0].upper() + words[1:] if _sentence_start(text, m.start()) else words, text)
+    return pattern.sub(lambda m: words[0].upper() + words[1:] if opens_sentence(text, m.start()) else words, text)
 
 
 def narrator(text: str) -> tuple[str, str] | None:

@@ -15,9 +15,16 @@ def sentences(text: str) -> list[str]:
     return [p.strip() for p in parts if p.strip()]
 
 
+# Titles and Latin abbreviations whose full stop ends no sentence: "Ofc. Smith", "e.g. a van".
+_ABBREVIATED = re.compile(r"\b(?:MR|MRS|MS|DR|SGT|OFC|LT|CPL|DEP|TPR|E\.G|I\.E)\.$", re.I)
+
+
 def opens_sentence(text: str, at: int) -> bool:
-    """Whether `at` opens a sentence of `text`: what a reader writes out there takes a capital."""
-    return re.search(r"(?:^|[.!?]\s+)$", text[:at]) is not None
+    """Whether `at` opens a sentence of `text` (what a reader or a rewrite writes out there takes a capital):
+    between it and the text's start or a sentence's end (".", "!", "?") stand only spaces and a quotation's or
+    bracket's opening; a title's or an abbreviation's full stop ("Ofc. Smith", "e.g.") ends no sentence."""
+    before = text[:at].rstrip().rstrip("\"'(").rstrip()
+    return not before or before[-1] in "!?" or (before[-1] == "." and not _ABBREVIATED.search(before[-8:]))
 
 
 # A filing's note before its narrative: an update says what changed in the report, and names the crash's parties

@@ -12,6 +12,7 @@ import re
 from dataclasses import replace
 
 from sovarc.compiler.frontend.crash import agent_named
+from sovarc.compiler.frontend.lexicon import Form, forms
 from sovarc.dsl.ir import Action, ActionKind, Crash, Participant, Role, Unknown
 
 # A span a reader read a fact from, as in `rules.Spot`.
@@ -90,18 +91,20 @@ def moving_met_standing(crash: Crash, sentence: str, own: tuple[Action, ...] | U
     return replace(crash, striker=victim, victim=striker)
 
 
+# a strike said in the past ("made contact", "struck", "sideswiped")
+_MET = forms((Form.PAST,))
+
+
 def _front_strikes(sentence: str, pid: str) -> bool:
     """Whether the sentence makes the participant's front the subject of the strike."""
     return bool(
         re.search(
             rf"\bfront\b[\w' -]{{0,30}}? of (?:the )?(?:\w+ )?{pid}\b[^.;]{{0,30}}?"
-            r"\b(?:made contact|struck|hit|impacted|contacted|collided)\b",
+            r"\b" + _MET + r"\b",
             sentence,
             re.I,
         )
-        or re.search(
-            rf"\b{pid}'s front\b[^.;]{{0,30}}?\b(?:made contact|struck|hit|impacted|contacted|collided)\b", sentence
-        )
+        or re.search(rf"\b{pid}'s front\b[^.;]{{0,30}}?\b" + _MET + r"\b", sentence)
     )
 
 

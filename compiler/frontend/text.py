@@ -10,6 +10,7 @@ from sovarc.compiler.frontend.capitals import sentence_case
 from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.labels import drivers_vehicles, police_labels
+from sovarc.compiler.frontend.lexicon import IMPACT_NOUNS, IMPACT_VERBS, IMPACT_WORD, Form, forms, striking, struck
 from sovarc.compiler.frontend.names import THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
@@ -31,23 +32,20 @@ _PEDESTRIAN = re.compile(r"\b(pedestrian)s?\b(?:\s*#?\s*(\d))?", re.IGNORECASE)
 _PEDESTRIAN_GROUP = re.compile(r"\b(two|three|four|five) pedestrians\b", re.IGNORECASE)
 # A cyclist the report does not number: a vehicle (of kind bicycle), numbered after the vehicles it numbers.
 _CYCLIST = re.compile(r"\b(?:an?|the) (?:[\w-]+ ){0,2}?(?:pedal|bi)?cyclist\b(?![\w-])(?! lanes?\b)", re.IGNORECASE)
-_IMPACT = re.compile(
-    r"\b(struck|strik\w+|impact\w*|(?<!non-)(?<!non)contact\w*(?! (?:areas?|points?|zones?)\b)|collid\w+|hit"
-    r"|crash\w+ into|collision|rear[- ]ended"
-    r"|" + MOVED_INTO + r")\b",
-    re.IGNORECASE,
-)
+_IMPACT = re.compile(r"\b(?:" + IMPACT_WORD + "|" + MOVED_INTO + r")\b", re.IGNORECASE)
+# the nouns of a meeting, and the crash's own
+_MET_NOUNS = "|".join((*IMPACT_NOUNS, r"crash(?:es)?"))
 # An impact only feared or avoided is none: "steered left to avoid a collision", "a non-contact vehicle"; one
 # that could not be avoided is one ("was unable to avoid contact with V2").
 _NO_IMPACT = re.compile(
     r"\b(?<!unable to )(?<!failed to )(?<!not )(?<!n't )(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
-    r"(?:collision|impact|contact|crash|striking|hitting)\b"
+    r"(?:" + _MET_NOUNS + "|" + forms((Form.ING,)) + r")\b"
     r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
     r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b"  # what held then, not the meeting
     # a meeting denied: "no collision occurred", "passed without contact", "did not strike", "never made contact"
     r"|\b(?:no|without|never|(?:did|does|do|was|were|is) ?(?:not|n't)) (?:a |the |an |any |make |making |made )?"
     r"(?:(?!avoid|prevent)\w+ )?"
-    r"(?:collisions?|impacts?|contact|crash(?:es)?|struck|strike|striking|hit|hitting|collide)\b",
+    r"(?:" + _MET_NOUNS + "|" + forms() + r")\b",
     re.IGNORECASE,
 )
 
@@ -63,16 +61,19 @@ def without_non_impacts(sentence: str) -> str:
 # after its subject (a participant, a pronoun, a part of a vehicle, or "and"/"then" going on with the subject), is
 # read as its past, word for word.
 _IRREGULAR = (
-    "strikes struck hits hit comes came makes made begins began drives drove sees saw goes went runs ran "
-    "spins spun loses lost rear-ends rear-ended sideswipes sideswiped occurs occurred happens happened passes passed "
+    "comes came makes made begins began drives drove sees saw goes went runs ran "
+    "spins spun loses lost occurs occurred happens happened passes passed "
     "approaches approached proceeds proceeded crosses crossed"
 )
 _REGULAR = (
-    "turn stop slow brake steer swerve enter accelerate attempt start change pull back continue merge impact contact "
-    "travel fail depart rotate collide yield move veer exit overcorrect drift observe notice decelerate skid"
+    "turn stop slow brake steer swerve enter accelerate attempt start change pull back continue merge "
+    "travel fail depart rotate yield move veer exit overcorrect drift observe notice decelerate skid"
 )
 _PAST_OF = dict(zip(_IRREGULAR.split()[::2], _IRREGULAR.split()[1::2], strict=True))
 _PAST_OF.update({f"{v}s": f"{v}{'d' if v.endswith('e') else 'ped' if v == 'stop' else 'ed'}" for v in _REGULAR.split()})
+# (the verbs of impact as the lexicon writes them, a compound also joined: "sideswipes")
+for _v in (v for v in IMPACT_VERBS if " " not in v.base):
+    _PAST_OF.update({_v.third.replace("-", j): _v.past.replace("-", j) for j in ("-", "")})
 _VERBS_NOW = "|".join(sorted(_PAST_OF, key=len, reverse=True))
 _NOW = re.compile(
     r"(\b(?:[VP]\d|he|she|it|they|and|then|vehicle|crash|collision)(?: then)? )(" + _VERBS_NOW + r")\b", re.I
@@ -85,7 +86,7 @@ _NOW_AFTER_PART = re.compile(
     re.I,
 )
 # a strike said in the present passive: "its left side is struck by the front of V1"
-_IS_STRUCK = re.compile(r"\b(is|are)(?= (?:then )?(?:struck|hit|impacted|contacted|rear-ended|sideswiped|clipped)\b)")
+_IS_STRUCK = re.compile(r"\b(is|are)(?= (?:then )?" + struck() + r"\b)")
 
 
 def in_past(text: str) -> str:
@@ -261,7 +262,7 @@ def impact_clause(sentence: str) -> str:
 
 
 # A summary run together with the description (no full stop between them) still describes the contact.
-_MET = re.compile(r"\b(?:struck|strikes|hit|rear-ended|collided with|ma(?:de|king) contact)\b", re.I)
+_MET = re.compile(r"\b" + striking() + r"\b", re.I)
 
 
 def _thing_only(sentence: str) -> bool:
