@@ -35,6 +35,7 @@ DEFAULT_LIMIT_KMH = {RoadKind.STRAIGHT: 70.0, RoadKind.INTERSECTION: 50.0, RoadK
 USUAL_SHARE = 0.8  # of the limit: the speed a vehicle with no reported speed prefers
 MAX_CONTACTS = 4  # contacts tried, best first
 _STANDING = frozenset({ActionKind.STOP, ActionKind.PARKED})  # a participant of only these stands throughout
+PAST_CORNER = "past a corner its body swings over a lane line in"  # why a start is held back (corners.py)
 
 
 @dataclass(frozen=True)
@@ -170,9 +171,9 @@ def _lower_rotated(
                 continue
             contact, solution = item
             relaxed = ["no natural-looking timing fits: speeds or waits are at the edge of what the facts allow"]
-            corner = "past a corner its body swings over a lane line in"
             held = [
-                f"{pid} starts at least {routes[pid].start_lo:.0f} m along its route, {corner}" for pid in solution.held
+                f"{pid} starts at least {routes[pid].start_lo:.0f} m along its route, {PAST_CORNER}"
+                for pid in solution.held
             ]
             yield Lowered(
                 scenario,
