@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.action_words import DRIVING_ON, PATTERNS
 from sovarc.compiler.frontend.clauses import Piece
-from sovarc.compiler.frontend.lanes import LANE_USE, NUMBER, lane_change_side
+from sovarc.compiler.frontend.lanes import LANE_USE, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.retold import under_way_at_impact
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
@@ -24,227 +25,6 @@ from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
-_TURN = (
-    # (not a head turned to look: "his head was turned left", "with her head turning left")
-    r"(?<!\bhead )(?<!\bhead was )(?<!\bheads were )(?<!\bhead is )\bturn(?:ed|ing|s)? (?:to the |to its )?{0}\b"
-    # (not a turn approached: "approached a right turn onto Oak Street" names the turn ahead, not yet begun)
-    r"|(?<!approached a )(?<!approaching a )(?<!approaches a )"
-    r"\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
-    r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
-    # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
-    r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
-    r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
-)
-# The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
-# in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
-# from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
-# on the left"; "made a left turn in front of V1. As it passed V1, ..."), as NHTSA codes it.
-_DRIVING_ON = re.compile(r"\bapproach(?:ed|es)\b[^.,;]{0,30}?\bfrom behind\b", re.I)
-_PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
-    # Backing: "backed out of a driveway", "was reversing", "began to back up", "put the car in reverse".
-    # "Traffic was backed up" is a queue, not a move.
-    (
-        ActionKind.REVERSE,
-        re.compile(
-            r"\b(?:back(?:ed|ing)|revers(?:ed|ing|es|e)) (?:out|into|in|toward|towards|away|from|down|across|onto"
-            r"|through|along|around|to|straight)\b|(?<!was )(?<!were )(?<!\w-)\bback(?:ed|ing) up\b"
-            r"|\b(?:began|begin|started|start|attempt\w*|tried|trying) (?:to )?(?:back|revers)\w*"
-            r"|\b(?:in|into) reverse\b|\breversing\b|\bwas backing\b"
-            # "reversed, and", "reversed at a low speed": the verb on its own (not "reversed direction")
-            r"|\breversed\b(?! (?:its |the )?(?:direction|course|decision|order))"
-            # "began to roll backwards", "moved backward", "rolled back into"
-            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|came|travel\w*|slid\w*)(?: \w+)? backwards?\b"
-            r"|\brolled back\b",
-            re.I,
-        ),
-    ),
-    # Parked: where it started, at the kerb or in a parking space ("was parked", "out of a parking space").
-    (
-        ActionKind.PARKED,
-        re.compile(
-            # (not "parked" said of other road users: "rows of parked cars", "vehicles parked at the curb")
-            r"(?<!\bvehicles )(?<!\bcars )(?<!\btrucks )\bparked\b"
-            r"(?! (?:[a-z]+ )?(?:cars|vehicles|trucks|vans|suvs|buses|motorcycles|bikes|bicycles|trailers)\b)"
-            r"|\bout of (?:a|the|its|an) (?:[\w-]+ )?(?:parking (?:space|spot|stall|place)|parking lane"
-            r"|parallel[- ]parking (?:space|spot))",
-            re.I,
-        ),
-    ),
-    (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
-    (ActionKind.TURN_LEFT, re.compile(_TURN.format("left"), re.I)),
-    (ActionKind.TURN_RIGHT, re.compile(_TURN.format("right"), re.I)),
-    (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            r"\b(?:chang|switch)(?:es?|ed|ing)? lanes?\b|\blane[- ]chang(?:es?|ing)\b|\bmerg(?:es?|ed|ing)\b", re.I
-        ),
-    ),
-    (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            r"\b(?:mov|merg|swerv|steer|veer|drift|chang|pull|maneuver|manoeuvr)\w*(?: \w+){0,6}? (?:in)?to the "
-            r"(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b"
-            r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
-            r"(?:the|an?) (?:\w+ ){0,2}lane\b",
-            re.I,
-        ),
-    ),
-    # Sideways into a lane named by its number: "veered to the right crossing over lane two into lane one",
-    # "moved into the number two lane". Reports number the lanes of one direction, so a numbered lane
-    # (with no other direction named) is a lane of its own road side: a lane change.
-    (
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            r"\b(?:mov|merg|swerv|steer|veer|drift|cross|chang|pull|cut)\w*\b[^.;]{0,50}?\b(?:in)?to (?:the )?"
-            r"(?:number " + NUMBER + r"[- ]lane|lane (?:number |#)?" + NUMBER + r")\b"
-            r"(?! (?:of )?(?:the )?(?:north|south|east|west)bound)",
-            re.I,
-        ),
-    ),
-    (
-        ActionKind.RETROGRADE,
-        re.compile(
-            # the line between the directions, however it is named: "the center lane line", "the centre divider"
-            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
-            r"|\bleft of cent(?:er|re)\b"
-            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
-            r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side|direction)\b"
-            r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
-            r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
-            r"|\bcross(?:ed|ing) (?:over )?(?:the )?(?:\w+ )?lane lines? (?:to|on) the left"
-            r"|\bcrossed over\b(?! the (?:curb|median))",
-            re.I,
-        ),
-    ),
-    (
-        ActionKind.DRIVE_INTO,
-        re.compile(
-            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
-            r"(?:drive(?:way)?|parking|lot|parked)"
-            r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|emerg(?:ed|ing|es) from|pull(?:ed|ing)? out of"
-            r"|proceed(?:ed|ing)? out of"
-            r"|(?<!backed )(?<!backing )(?<!reversed )(?<!reversing )out of) (?:a|the|an|its) (?:private )?"
-            r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
-            r"|plaza|premises|property|residence|garage)"
-            r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
-            r"|\bfrom (?:a|the) (?:private )?(?:drive(?:way)?|parking (?:lot|garage|structure))\b"
-            # into the flow of traffic, or onto the road itself, from wherever it stood off it: "attempting to
-            # enter traffic", "maneuvered into the roadway" (not "into the intersection": that is crossing)
-            r"|\benter(?:ed|ing|s)? (?:the )?(?:flow of )?traffic\b"
-            r"|\b(?:maneuver|manoeuvr|pull|mov)\w* (?:out )?(?:in)?to the (?:road(?:way)?|street)\b"
-            r"|\bre-?enter(?:ed|ing|s) the (?:road|roadway|street|travel lane)"
-            # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
-            # "departing a parking space", "pulled out of the parked position"
-            r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
-            r"(?:curb(?:side)?|kerb|parking (?:space|spot|stall|position)|parked position)\b"
-            r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
-            re.I,
-        ),
-    ),
-    (
-        ActionKind.DRIVE_OFF,
-        re.compile(
-            r"\bran off the road|\bdeparted the road|\bleft the road|\bonto the shoulder"
-            r"|\bover the right (?:lane |edge |fog )?line"
-            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road",
-            re.I,
-        ),
-    ),
-    (
-        ActionKind.GO_ACROSS,
-        re.compile(
-            r"\bcontinu(?:ed|ing|es|e) (?:through|thru|across|on through)\b"
-            r"|\bcross(?:ed|ing|es)? (?:over )?(?:the|an|this) intersection|\b(?:through|thru|across) the intersection"
-            r"|\bproceed(?:ed|ing|s)? (?:through|thru|across)\b|\benter(?:ed|ing|s) the intersection\b"
-            r"|\binto the intersection\b|\battempt(?:ed|ing)? to cross\b"
-            r"|\b(?:through|ran|run|running) (?:a|the) (?:red|yellow|green|steady red) (?:light|signal|indication)\b"
-            r"|\b(?:through|ran|run|running|past|disregard\w*) (?:a|the) stop sign\b",  # into the junction
-            re.I,
-        ),
-    ),
-    (
-        ActionKind.STOP,
-        re.compile(
-            # (not "nearly stopped", "came to a near stop": it was still moving)
-            r"(?<!\bnearly )(?<!\balmost )\bstopped\b"
-            r"|\b(?:came|come|comes|coming) to a (?:complete |full |sudden )?stop\b"
-            r"|\bmade a (?:complete |full )?stop\b|\bslowed to a stop\b|\bwait(?:ing|ed)\b|\bawaiting\b"
-            r"|\bstationary\b|\bat a standstill\b|\bstopping\b"
-            # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
-            r"|\bto a (?:complete |full |sudden |quick |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
-            r"|\bidling\b"
-            r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
-            re.I,
-        ),
-    ),
-    # Moving off again after a stop: it drives along its lane ("began to move forward", "proceeded forward").
-    (
-        ActionKind.FOLLOW_LANE,
-        re.compile(
-            r"\b(?:began|begin|begins|beginning|started|starting|start) (?:to )?(?:mov|roll|proceed|accelerat|creep|"
-            # ("began to pull out": moving off from where it stood, not "pull over", "pull into a space")
-            r"advanc|go\b|pass|drive|driving|pull(?= out\b(?! of\b| onto\b| into\b)))\w*"
-            r"|\b(?:proceed|mov|pull|continu|drove|inch)\w* (?:\w+ly )?(?:forward|ahead)\b"
-            # (with how it moved, "pulled slightly forward", or where to: "then proceeded westbound")
-            r"|\bproceed(?:ed|s)? (?:north|south|east|west)(?:bound|ward)?\b"
-            r"|\bpass(?:ed|es)\b|\bovert(?:ook|akes)\b|\bproceed(?:ed|s)? to\b"
-            # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
-            r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
-            # closing on another from behind (see _DRIVING_ON)
-            r"|" + _DRIVING_ON.pattern,
-            re.I,
-        ),
-    ),
-    # Out of its own lane sideways, toward a lane it names or the one it left says: "veered out of its lane"
-    (
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            r"\b(?:veer|swerv|drift)\w* (?:\w+ )?out of (?:its|their|his|her|the) (?:own |travel )?lane\b", re.I
-        ),
-    ),
-    # Into the lane another road user is in, or the one between: a lane change, its side said by the lane left
-    # ("V2 in the left adjacent lane ... entered V1's lane")
-    (
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            # ("entered V1's lane": enter takes the place entered as its object, with no "into")
-            # ("encroached into V1's lane": to intrude into another's space; "drifted right into V1's lane")
-            r"\b(?:(?:enter|cross|mov|merg|drift|veer|swerv|cut|came|come|travel|encroach)\w* (?:over |left |right )?"
-            r"(?:in)?to "
-            r"|enter(?:ed|ing|s)? )"
-            r"(?:[VP]\d's (?:travel )?lane|the lane (?:in which|where|that|occupied by) [VP]\d"
-            r"|the (?:center|centre|middle) (?:travel )?lane)\b"
-            # back into a lane it had left ("exited the bus lane ... reentered the bus lane"): not the travel lane,
-            # which is the road one comes back onto from off it
-            r"|\bre-?enter(?:ed|ing|s) (?:the|its) (?!travel\b)(?:[\w/-]+ ){0,2}?lane\b",
-            re.I,
-        ),
-    ),
-    # Around another road user, to one side: "maneuvered around the left side of V1", "steered around V1 using
-    # the left turn lane": a lane change to the side it names
-    (
-        ActionKind.CHANGE_LANE,
-        re.compile(
-            r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b"
-            # or toward its side from behind it: "began to accelerate toward the right side of V1"
-            r"|\b(?:accelerat|steer|swerv|mov|veer|pull|drove|driv|head)\w* (?:\w+ )?towards? the (?:left|right) side "
-            r"of [VP]\d\b",
-            re.I,
-        ),
-    ),
-    # Into the other direction's lane, said as entering it: "entered the opposing lane of travel to pass".
-    (
-        ActionKind.RETROGRADE,
-        re.compile(
-            r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
-            r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b"
-            # passing by way of the other direction's lane: "passed V1 by driving in the oncoming traffic lane"
-            r"|\bpass\w*\b[^.;]{0,40}?\b(?:in|into|using|through|via) (?:the |an )?(?:oncoming|opposing|opposite)"
-            r"(?: traffic| travel)? lanes?\b",
-            re.I,
-        ),
-    ),
-]
 # A vehicle said to be in the other direction's lane ("V2 in the oncoming lane", "traveling in the opposite
 # lane"): moving sideways from there into another's lane is a move onto the wrong side of the road.
 _IN_OPPOSING = re.compile(
@@ -411,8 +191,8 @@ def _found(
             found += _bare_turns(piece, done, meant)
         earlier = [m.span() for m in _AFTER.finditer(done)]
         # "pulled out of the parked position": the state it left came before it entered the road
-        left_from = [m.span() for k, p in _PATTERNS if k is ActionKind.DRIVE_INTO for m in p.finditer(done)]
-        for kind, pattern in _PATTERNS:
+        left_from = [m.span() for k, p in PATTERNS if k is ActionKind.DRIVE_INTO for m in p.finditer(done)]
+        for kind, pattern in PATTERNS:
             for m in pattern.finditer(done):
                 act, to = kind, None
                 if act is ActionKind.CHANGE_LANE and _IN_OPPOSING.search(said + done[: m.start()]):
@@ -519,7 +299,7 @@ def read_actions_at(
     """`read_actions`, and where each action was read (an offset into the pieces' joined sentences), so a
     reviewer can be shown why it was read."""
     # (a piece in which any action is read describes it: "V2 behind it was switching lanes")
-    shown = any(_DESCRIBED.search(p.text) or any(x.search(what_was_done(p.text)) for _, x in _PATTERNS) for p in pieces)
+    shown = any(_DESCRIBED.search(p.text) or any(x.search(what_was_done(p.text)) for _, x in PATTERNS) for p in pieces)
     if not shown:  # never described before the impact: not known,
         # unless its front made the impact and it is said to be moving ("V2 following behind V1 struck ...")
         moving = next((p.at + m.start() for p in pieces if (m := _MOVING_STRIKER.search(p.text))), None)
@@ -533,10 +313,10 @@ def read_actions_at(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
-    # Driving on is said only of a vehicle that moved off again after a stop (see _PATTERNS), and only when it
+    # Driving on is said only of a vehicle that moved off again after a stop (see PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
-    # its turn or lane change, the last thing it did (see _DRIVING_ON).
-    on = {p.at + m.start() for p in pieces for m in _DRIVING_ON.finditer(what_was_done(p.text))}
+    # its turn or lane change, the last thing it did (see DRIVING_ON).
+    on = {p.at + m.start() for p in pieces for m in DRIVING_ON.finditer(what_was_done(p.text))}
     found = [
         (at, a)
         for i, (at, a) in enumerate(found)
