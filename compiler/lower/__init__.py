@@ -87,13 +87,16 @@ def stagings_on(scenario: Scenario, match: SiteMatch, road_map: RoadMap, notes: 
     # staging: a turn across the partner's path that meets it head-on is the likelier crash
     # last, the pair's junction moves made from the lanes the report puts them in, across the lanes
     # the map makes those moves from (routes._from_own_lane): the map's arrows are kept while they can be
-    # last of all, where one of the pair turns in legs: the crash on an earlier leg of the turn, its
-    # route cut where that leg ends (midturn.py), after every staging of the whole turn
-    passes = [(False, False, False)] + ([(True, False, False)] if crash.type is CrashType.FRONTAL else [])
-    passes += [(False, True, False), (False, False, True)]
-    for corner, keep, legs in passes:
+    # last, where one of the pair turns in legs: the crash on an earlier leg of the turn, its route cut
+    # where that leg ends (midturn.py), after every staging of the whole turn; and for a side crash, last
+    # of all, the striker's front met where its leading corner just reaches the victim's side
+    # (contact._grazing): a slow front closing at a shallow angle on a fast victim
+    passes = [(False, False, False, False)] + ([(True, False, False, False)] if crash.type is CrashType.FRONTAL else [])
+    passes += [(False, True, False, False), (False, False, True, False)]
+    passes += [(False, False, False, True)] if crash.type is CrashType.SIDE else []
+    for corner, keep, legs, grazing in passes:
         for rotated in _rotations(scenario, match):
-            args = (limit, limit_fact, match, corner, keep, legs)
+            args = (limit, limit_fact, match, corner, keep, legs, grazing)
             for item in _lower_rotated(scenario, rotated, road_map, notes, *args):
                 if isinstance(item, UnsatError):
                     first = first or item
@@ -125,12 +128,14 @@ def _lower_rotated(
     corner: bool = False,
     keep: bool = False,
     legs: bool = False,
+    grazing: bool = False,
 ) -> Iterator[Lowered | UnsatError]:
     """The solved stagings on one rotation of the site, in order, with the reason each one that fails
     does; `corner`: those met at a corner (contact._corner) alone, else all others; `keep`: only the
     one with the pair's junction moves made from their own lanes, when the map makes one of them
     from another lane (none else); `legs`: only those where one of the pair turns in legs, met on
-    an earlier leg of the turn (midturn.py; the first reason stands)."""
+    an earlier leg of the turn (midturn.py; the first reason stands); `grazing`: a side crash's
+    contacts where the striker's corner just reaches the victim's side (contact._grazing) alone."""
     crash = scenario.crash
     assert isinstance(crash.type, CrashType) and isinstance(crash.striker, str) and isinstance(crash.victim, str)
     kept = _off_their_lanes(scenario, match, (crash.striker, crash.victim)) if keep else set()
@@ -155,11 +160,12 @@ def _lower_rotated(
             routes, found, leg = _on_earlier_leg(routes, crash.type, crash.striker, crash.victim)
         else:
             leg = ""
-            found = [c for c in contacts(striker, victim, crash.type) if (c.kind == "corner") == corner]
+            found = contacts(striker, victim, crash.type, grazing=grazing)
+            found = [c for c in found if (c.kind == "corner") == corner]
         if not found and legs:
             continue
         if not found:
-            if corner:
+            if corner or grazing:
                 continue  # the reason is the first pass's
             yield UnsatError(_no_contact(scenario, match, striker, victim, crash.type))
             continue
