@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT
+from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, struck
 
 # Words right before a participant's name that make it an object, not the subject of what follows.
 _OBJECT_BEFORE = re.compile(
@@ -75,7 +75,8 @@ _OBJECT_CLAUSE_END = re.compile(
 _SCENE = re.compile(
     r"(?:the|this|that|both|each) (?:\w+ ){0,2}?(?:road(?:way)?s?|streets?|highways?|intersections?|lanes?|weather|"
     r"speed limits?|crash|collision|area|approach(?:es)?|median|shoulder|signal|light|sign)\b"
-    r"|(?:it|there) (?:was|were|is|are)\b|conditions\b",
+    # (not "It was rear-ended by V2": an impact said of "it" is about the one named before, not the place)
+    r"|(?:it|there) (?:was|were|is|are)\b(?! (?:then |\w+ly )?" + struck() + r"\b)|conditions\b",
     re.IGNORECASE,
 )
 _NAME = re.compile(r"\b[VP]\d\b")

@@ -95,6 +95,11 @@ IMPACT_VERBS = (
     _regular("collide", "with", direct=False, reads="verb"),
     _regular("rear-end"),
     _regular("crash", "into", direct=False, alone=False),
+    # A violent blow into another, its subject the striker: said only with "into" ("slammed on its brakes",
+    # "plowed through the snow" are no impacts).
+    _regular("smash", "into", direct=False, alone=False),
+    _regular("slam", "into", direct=False, alone=False),
+    _regular("plow", "into", direct=False, alone=False),
     # ("made contact" alone: its front made contact, the object said elsewhere)
     Verb(
         "make contact",

@@ -20,7 +20,9 @@ from sovarc.compiler.frontend.words import number
 # V1, V-1, V 1, V#1, Vehicle #1, Vehicle # 1, Vehicle 1, vehicle one, Vehicle No. 1, Unit 1, Unit #1
 _VEHICLE = re.compile(
     r"\b(?:V(?:-|#\s*|(?<=\bV) )?(\d)(?![\w-])(?!\.\d)"
-    r"|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)(?![\w-]))",
+    r"|(?:vehicle|unit)\s*(?:#|no\.?|number)?\s*(\d|one|two|three|four|five)(?![\w-])"
+    # (not a count of what follows: "a passenger vehicle two vehicles behind V1", "a vehicle 3 car lengths ahead")
+    r"(?!\s+(?:(?:car|vehicle) )?(?:vehicles|cars|lanes|lengths|feet|ft|meters|seconds|times|miles)\b))",
     re.IGNORECASE,
 )
 # Police forms number the drivers as their vehicles: "Driver #1", "Driver 2", "driver one" is the driver of V1.
@@ -40,7 +42,8 @@ _MET_NOUNS = "|".join((*IMPACT_NOUNS, r"crash(?:es)?"))
 _NO_IMPACT = re.compile(
     r"\b(?<!unable to )(?<!failed to )(?<!not )(?<!n't )(?:avoid|prevent)(?:ing)? (?:a |the |an |making )?(?:\w+ )?"
     r"(?:" + _MET_NOUNS + "|" + forms((Form.ING,)) + r")\b"
-    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b"  # the scene, not the participants meeting
+    # the scene, not the participants meeting; but one "between V1 and V2" names both parties of the impact
+    r"|\b(?:collision|crash|impact) (?:occurred|happened|took place)\b(?! between\b)"
     r"|\bat the time of (?:the )?(?:impact|contact|collision|crash)\b"  # what held then, not the meeting
     # a meeting denied: "no collision occurred", "passed without contact", "did not strike", "never made contact"
     r"|\b(?:no|without|never|(?:did|does|do|was|were|is) ?(?:not|n't)) (?:a |the |an |any |make |making |made )?"
@@ -287,10 +290,15 @@ def own_impact(sents: list[str], impact: int) -> int:
     that, the SUV swerved into V1"), the first later sentence whose impact clause names V1, for the scenario is
     V1's crash; else `impact`. A pronoun in the impact clause may be V1 ("when it made contact with V2"): then
     the impact stays."""
-    if impact < 0 or re.search(r"\bV1\b|\b(?:it|its|they|them)\b", impact_clause(sents[impact]), re.I):
+    if impact < 0 or re.search(_V1_MET + r"|\b(?:it|its|they|them)\b", impact_clause(sents[impact]), re.I):
         return impact
     later = (i for i in range(impact + 1, len(sents)) if describes_impact(sents[i]))
-    return next((i for i in later if re.search(r"\bV1\b", impact_clause(sents[i]))), impact)
+    return next((i for i in later if re.search(_V1_MET, impact_clause(sents[i]))), impact)
+
+
+# V1 as a party of an impact clause, not as the owner of a place another crossed ("turned left across V1's path
+# and made contact with V3": V1 was not met there).
+_V1_MET = r"\bV1\b(?!'s (?:lane|path)\b)"
 
 
 def up_to_first_impact(sents: list[str]) -> list[str]:
