@@ -73,7 +73,19 @@ _REGULAR = (
     "travel fail depart rotate yield move veer exit overcorrect drift observe notice decelerate skid"
 )
 _PAST_OF = dict(zip(_IRREGULAR.split()[::2], _IRREGULAR.split()[1::2], strict=True))
-_PAST_OF.update({f"{v}s": f"{v}{'d' if v.endswith('e') else 'ped' if v == 'stop' else 'ed'}" for v in _REGULAR.split()})
+
+
+def _regular_past(verb: str) -> str:
+    """A regular verb's past: "-d" after an "e"; a one-syllable verb ending in one vowel and a consonant doubles
+    the consonant ("stop" -> "stopped", "skid" -> "skidded"); else "-ed"."""
+    if verb.endswith("e"):
+        return f"{verb}d"
+    if re.fullmatch(r"[^aeiou]*[aeiou][^aeiouwxy]", verb):
+        return f"{verb}{verb[-1]}ed"
+    return f"{verb}ed"
+
+
+_PAST_OF.update({f"{v}s": _regular_past(v) for v in _REGULAR.split()})
 # (the verbs of impact as the lexicon writes them, a compound also joined: "sideswipes")
 for _v in (v for v in IMPACT_VERBS if " " not in v.base):
     _PAST_OF.update({_v.third.replace("-", j): _v.past.replace("-", j) for j in ("-", "")})

@@ -248,3 +248,9 @@ def test_evidence_of_a_respelt_report_quotes_its_own_words() -> None:
     quotes = {e.fact: e.quote for e in scenario.provenance.evidence}
     assert "westbound" in quotes["V1.heading"]
     assert all(e.quote == text[e.start : e.end] for e in scenario.provenance.evidence)
+
+
+def test_a_one_syllable_verb_doubles_its_last_consonant_in_the_past() -> None:
+    # "skids" is "skidded", as "stops" is "stopped"; "turns" and "pulls" are not doubled
+    text = "V1 skids on the ice and then stops. V2 turns left and pulls over."
+    assert in_past(text) == "V1 skidded on the ice and then stopped. V2 turned left and pulled over."
