@@ -5,19 +5,11 @@ the automated vehicle's own impact in a narrative of three road users, and a cou
 from __future__ import annotations
 
 import pytest
-from sovarc.compiler.frontend import FrontEnd
-from sovarc.dsl.ir import UNKNOWN, ActionKind, CrashType, Participant, Scenario, VehicleKind
-from sovarc.dsl.span import Source
+from sovarc.dsl.ir import UNKNOWN, ActionKind, CrashType, Participant, VehicleKind
+
+from tests.compiler.frontend.sgo_reading import by_id, read
 
 HEAD = "A Waymo Autonomous Vehicle was in a collision involving a passenger car on Oak Street. "
-
-
-def read(text: str) -> Scenario:
-    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
-
-
-def by_id(s: Scenario, pid: str) -> Participant:
-    return next(p for p in s.participants if p.id == pid)
 
 
 def last(p: Participant) -> ActionKind:

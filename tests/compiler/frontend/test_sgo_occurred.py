@@ -5,17 +5,9 @@ these tests; and a road user's words broken across a line, as narratives wrapped
 from __future__ import annotations
 
 import pytest
-from sovarc.compiler.frontend import FrontEnd
-from sovarc.dsl.ir import ActionKind, Participant, Scenario, VehicleKind
-from sovarc.dsl.span import Source
+from sovarc.dsl.ir import ActionKind, VehicleKind
 
-
-def read(text: str) -> Scenario:
-    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
-
-
-def by_id(s: Scenario, pid: str) -> Participant:
-    return next(p for p in s.participants if p.id == pid)
+from tests.compiler.frontend.sgo_reading import by_id, read
 
 
 def test_the_other_party_of_a_collision_that_occurred_is_named() -> None:

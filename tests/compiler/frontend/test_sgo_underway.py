@@ -5,23 +5,10 @@ the side a move heads for names no subject of the strike."""
 from __future__ import annotations
 
 import pytest
-from sovarc.compiler.frontend import FrontEnd
 from sovarc.compiler.frontend.crash import read_sentence
-from sovarc.dsl.ir import ActionKind, CrashType, Participant, Scenario
-from sovarc.dsl.span import Source
+from sovarc.dsl.ir import ActionKind, CrashType
 
-
-def read(text: str) -> Scenario:
-    return FrontEnd("none").extract(Source("sgo.txt", text)).scenario
-
-
-def kinds(p: Participant) -> list[ActionKind]:
-    assert isinstance(p.actions, tuple)
-    return [a.kind for a in p.actions]
-
-
-def by_id(s: Scenario, pid: str) -> Participant:
-    return next(p for p in s.participants if p.id == pid)
+from tests.compiler.frontend.sgo_reading import by_id, kinds, read
 
 
 @pytest.mark.parametrize(
