@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.kinds import kind_named
+from sovarc.compiler.frontend.kinds import kind_named, said_kind
 from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETING_NOUNS, stems
+from sovarc.compiler.frontend.overview import SUMMARY, name_overview, overview_users
 from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
@@ -84,7 +85,7 @@ _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LAB
 # (not "a collision": a summary's, `_SUMMARY`, read only where no sentence says how the parties met)
 _IMPACT = re.compile(r"\b(?:" + stems(MEETING_NOUNS) + "|" + INTO_ANYTHING + r")\b", re.I)
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
-_SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
+_SUMMARY = SUMMARY
 _OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
 THING = re.compile(
@@ -94,10 +95,16 @@ THING = re.compile(
 )
 
 
-def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) -> str:
+def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False, said: list[str] | None = None) -> str:
     """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id; a make with the
     model and kind said after it ("the Ford Taurus sedan"). `introduced`: not the words of an introduction kept
-    beside the id ("V2, a 1994 Ford Taurus,")."""
+    beside the id ("V2, a 1994 Ford Taurus,"). `said` collects the words replaced."""
+
+    def put(m: re.Match[str]) -> str:
+        if said is not None:
+            said.append(m.group())
+        return pid
+
     after = r"(?-i:(?:[- ][A-Z0-9][\w.-]*)*)(?:\s+(?:" + _KINDS + r"))?" if phrase[:1].isupper() else ""
     return re.sub(
         (r"(?<![VP]\d, )" if introduced else "")
@@ -111,7 +118,7 @@ def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) 
         + after
         + r"\b(?![\w-])"
         + _NOT_USER,
-        pid,
+        put,
         text,
         flags=re.I,
     )
@@ -259,6 +266,11 @@ def _others(text: str) -> list[tuple[str, str]]:
             return [(make.group(1), make.group("words"))]
         # else the last road user introduced before it: "a passenger car", not "the vehicle", which points back to
         # one already named (the automated vehicle itself, often)
+        # the road user the overview names ("was in a collision involving a heavy truck"), when it names one; else
+        # the last road user introduced before it: "a passenger car", not "the vehicle", which points back to one
+        # already named (the automated vehicle itself, often)
+        if told := overview_users(sents, _USER):
+            return [(_head(told[0]), told[0].group())]
         before = [m for s in sents[:i] for m in _USER.finditer(s) if not m.group().lower().startswith("the ")]
         return [(_head(before[-1]), before[-1].group())] if before else []
     return []
@@ -304,6 +316,7 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     text, said = automated
     others = _others(text)
     text, named, words_of = _number(text, others, {"V1": said})
+    text, words_of = name_overview(text, words_of, _USER)
     note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
     if named:
         note += "; the other road users in the first impact are " + ", ".join(named)
@@ -347,16 +360,19 @@ def _number(
             text = _OTHER.sub(pid, text)
             continue
         head, tail = text[: max(start, 0)], text[max(start, 0) :]
+        said: list[str] = []  # every phrase that now says this party
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            tail = _replace_phrase(tail, words_for, pid, introduced)
+            tail = _replace_phrase(tail, words_for, pid, introduced, said)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced)  # "the car" for "a passenger car"
+            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced, said)  # "the car" for "a passenger car"
         if (generic := _GENERIC.get(kind.lower())) and not any(_generic(k) == generic for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, generic, pid, introduced)  # "the truck" for "a tractor-trailer"
+            tail = _replace_phrase(tail, generic, pid, introduced, said)  # "the truck" for "a tractor-trailer"
         model = re.search(re.escape(kind) + r" ((?-i:[A-Z][a-z][\w-]*))\b", words) if kind[:1].isupper() else None
         if model and not any(model[1] in w for k, w in others if k != kind):
-            tail = _replace_phrase(tail, model[1], pid, introduced)  # "the Civic" for "a Honda Civic"
+            tail = _replace_phrase(tail, model[1], pid, introduced, said)  # "the Civic" for "a Honda Civic"
         text = head + tail
+        # "a passenger vehicle ... The vehicle made contact": the kind its other words say (see `kinds.said_kind`)
+        words_of[pid] = said_kind(words_of[pid], said)
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
             text = _OTHER.sub(pid, text)
     return text, named, words_of

@@ -1,0 +1,111 @@
+"""Who the partner is and what kind (issue 18, sgo10c), on sentences written for these tests: a partner told with
+no kind, or a wider one, whose kind another of its mentions or the narrative's overview says."""
+
+from __future__ import annotations
+
+import pytest
+from sovarc.compiler.evaluation.sgo import parties
+from sovarc.dsl.ir import UNKNOWN, Scenario, VehicleKind
+
+from tests.compiler.frontend.sgo_reading import read
+
+
+def partner(s: Scenario) -> VehicleKind:
+    cp = parties(s)[1]
+    assert cp is not None and [p.id for p in s.participants] == ["V1", cp.id]
+    return cp.kind
+
+
+def overview(verb: str, user: str) -> str:
+    return f"On May 2, 2024 at 3:10 PM a Waymo Autonomous Vehicle operating in Phoenix {verb} {user} on Oak Street. "
+
+
+@pytest.mark.parametrize(
+    "verb", ["was in a collision involving", "was in a collision with", "was involved in a collision with"]
+)
+@pytest.mark.parametrize(
+    ("user", "kind"),
+    [
+        ("a passenger car", VehicleKind.CAR),
+        ("an SUV", VehicleKind.CAR),
+        ("a box truck", VehicleKind.TRUCK),
+        ("a motorcycle", VehicleKind.MOTORCYCLE),
+        ("a pickup truck", VehicleKind.PICKUP),
+        ("a city bus", VehicleKind.BUS),
+    ],
+)
+@pytest.mark.parametrize(
+    "told",
+    [
+        "A vehicle approached from behind and made contact with the rear bumper of the Waymo AV.",
+        "The vehicle immediately behind the Waymo AV made contact with the rear bumper of the Waymo AV.",
+        "The other vehicle made contact with the rear bumper of the Waymo AV.",
+        "The Waymo AV was rear-ended by a vehicle that had been following it.",
+    ],
+)
+def test_a_partner_told_with_no_kind_is_the_road_user_the_overview_names(
+    verb: str, user: str, kind: VehicleKind, told: str
+) -> None:
+    s = read(overview(verb, user) + "The Waymo AV was stopped at a red light on northbound Oak Street. " + told)
+    assert partner(s) is kind
+
+
+@pytest.mark.parametrize(
+    ("introduced", "later", "kind"),
+    [
+        ("a passenger vehicle", "The vehicle", VehicleKind.CAR),
+        ("a pick-up truck", "The oncoming truck", VehicleKind.PICKUP),
+        ("a box truck", "The truck", VehicleKind.TRUCK),
+        ("a passenger car", "The car", VehicleKind.CAR),
+    ],
+)
+def test_a_later_mention_with_a_wider_noun_keeps_the_kind_it_was_introduced_with(
+    introduced: str, later: str, kind: VehicleKind
+) -> None:
+    s = read(
+        "A Waymo AV was traveling north on Oak Street in autonomous mode. "
+        f"{introduced[0].upper() + introduced[1:]} in the oncoming lane veered out of its lane and into the "
+        f"northbound lane. {later} made contact with the left rear door of the Waymo AV."
+    )
+    assert partner(s) is kind
+
+
+def test_a_partner_said_only_by_a_part_of_it_is_the_road_user_the_overview_names() -> None:
+    s = read(
+        overview("was in a collision involving", "a heavy truck")
+        + "The Waymo AV was stopped for a passenger drop off, with a heavy truck parked directly in front of it. "
+        "The Waymo AV then came to a stop to yield to an SUV that was approaching in the left lane. "
+        "As the Waymo AV was proceeding forward, the corner of the lowered loading ramp made contact with the "
+        "passenger side of the Waymo AV."
+    )
+    assert partner(s) is VehicleKind.TRUCK
+
+
+def test_an_overview_of_several_road_users_names_no_one_partner() -> None:
+    s = read(
+        overview("was in a collision involving", "two passenger vehicles")
+        + "The Waymo AV was stopped at a red light. A vehicle approached from behind and made contact with the "
+        "rear bumper of the Waymo AV."
+    )
+    cp = parties(s)[1]
+    assert cp is not None and cp.kind is UNKNOWN
+
+
+def test_a_partner_told_with_its_kind_keeps_it_against_the_overview() -> None:
+    s = read(
+        overview("was in a collision involving", "a passenger car")
+        + "The Waymo AV was stopped at a red light. A cyclist riding on the sidewalk entered the crosswalk and "
+        "made contact with the rear passenger door of the Waymo AV."
+    )
+    assert partner(s) is VehicleKind.BICYCLE
+
+
+def test_the_words_that_introduce_a_partner_still_say_what_it_was_doing() -> None:
+    s = read(
+        overview("was in a collision involving", "a passenger car")
+        + "The Waymo AV was stopped at a red light. An approaching vehicle made contact with the rear bumper of "
+        "the Waymo AV."
+    )
+    cp = parties(s)[1]
+    assert cp is not None and cp.kind is VehicleKind.CAR
+    assert isinstance(cp.actions, tuple) and [a.kind.value for a in cp.actions] == ["follow_lane"]
