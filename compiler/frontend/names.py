@@ -23,13 +23,15 @@ from sovarc.compiler.frontend.sentences import narrative_start, sentences
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
 _MODS = r"(?:" + _STOP + r"[\w.'-]+\s+){0,3}?"  # (a line may break inside the phrase)
-# Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle).
+# Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle): the body
+# words kinds.py knows ("a crossover", "a semi", "an e-bike"), and vehicles of a trade ("an ambulance").
 _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
-    r"tractor[- ]trailer|school bus|"
+    r"tractor[- ]trailer|semi-trailer|18-wheeler|school bus|station wagon|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
-    r"taxicab|taxi|convertible|limousine|ambulance|"  # (the nouns kinds.py knows, and vehicles of a trade)
-    r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
+    r"taxicab|taxi|convertible|limousine|ambulance|crossover|jeep|semi|"
+    r"motorcycle|motorcyclist|motorbike|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|"
+    r"bicycle|e-?bike|bike"
 )
 _PEOPLE = frozenset(("pedestrian",))
 _PEDESTRIAN = re.compile(r"\bpedestrian\b", re.I)

@@ -109,3 +109,26 @@ def test_the_words_that_introduce_a_partner_still_say_what_it_was_doing() -> Non
     cp = parties(s)[1]
     assert cp is not None and cp.kind is VehicleKind.CAR
     assert isinstance(cp.actions, tuple) and [a.kind.value for a in cp.actions] == ["follow_lane"]
+
+
+@pytest.mark.parametrize(
+    ("user", "kind"),
+    [
+        ("A crossover", VehicleKind.CAR),
+        ("A jeep", VehicleKind.CAR),
+        ("A station wagon", VehicleKind.CAR),
+        ("A semi", VehicleKind.TRUCK),
+        ("An 18-wheeler", VehicleKind.TRUCK),
+        ("A box truck", VehicleKind.TRUCK),
+        ("A minivan", VehicleKind.VAN),
+        ("A moped", VehicleKind.MOTORCYCLE),
+        ("A motorbike", VehicleKind.MOTORCYCLE),
+        ("An e-bike", VehicleKind.BICYCLE),
+        ("An ebike", VehicleKind.BICYCLE),
+        ("A scooter", VehicleKind.BICYCLE),
+        ("A Honda motorcycle", VehicleKind.MOTORCYCLE),
+    ],
+)
+def test_a_partner_named_by_a_body_word_is_that_kind(user: str, kind: VehicleKind) -> None:
+    s = read(f"A Waymo AV was stopped at a red light on Oak Street. {user} made contact with the rear of the Waymo AV.")
+    assert partner(s) is kind
