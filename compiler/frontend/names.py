@@ -17,7 +17,7 @@ import re
 from sovarc.compiler.frontend.kinds import kind_named, said_kind
 from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETING_NOUNS, stems
 from sovarc.compiler.frontend.overview import SUMMARY, name_overview, overview_users
-from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
+from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, MAKES, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
@@ -79,6 +79,13 @@ _BRAND_OF = (
     r"|technicians?|dealer\w*|depot|facility|app|rider|passengers?|specialists?|personnel"
 )
 _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b|\bmanual mode\b", re.I)
+# A fleet's name before a car's model, in a sentence saying it drove itself or was in manual mode ("a Nuro Prius
+# operating in manual mode", "the Waymo Pacifica was in autonomous mode"): the automated vehicle, named as `_BRAND`
+# names it, the model standing for the noun. A carmaker's name before its model is a car ("a Toyota Prius").
+_FLEET_MODEL = re.compile(
+    r"\b(?i:an?|the) (?!(?:" + MAKES + r")\b)([A-Z][\w.-]+) ([A-Z][a-z][\w-]*)\b(?![\w-])"
+    r"(?=[^.]*(?i:" + _AUTONOMY.pattern + r"))"
+)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
@@ -158,6 +165,8 @@ def _automated(text: str) -> tuple[str, str] | None:
     """Every mention of the automated vehicle as V1, and the words first used for it."""
     first = _AV.search(text)
     brand = _BRAND.search(text) if _AUTONOMY.search(text) else None
+    if brand is None and first is None:
+        brand = _FLEET_MODEL.search(text)
     if first is None and brand is None:
         return None
     numbers = [m.group(1) for m in _FLEET_NUMBER.finditer(text)]
@@ -266,8 +275,10 @@ def _others(text: str) -> list[tuple[str, str]]:
             return [("vehicle", other.group())]
         if make := _MAKE.search(sentence):  # "struck from behind by a red Toyota": a make names a vehicle
             return [(make.group(1), make.group("words"))]
-        # else the last road user introduced before it: "a passenger car", not "the vehicle", which points back to
-        # one already named (the automated vehicle itself, often)
+        # "A Toyota Prius was traveling north ... The Toyota Prius made contact": one a make introduced before it
+        made = [m for s in sents[:i] for m in _MAKE.finditer(s) if re.search(r"\b[Tt]he " + m[2] + r"\b", sentence)]
+        if made:
+            return [(made[-1].group(1), made[-1].group("words"))]
         # the road user the overview names ("was in a collision involving a heavy truck"), when it names one; else
         # the last road user introduced before it: "a passenger car", not "the vehicle", which points back to one
         # already named (the automated vehicle itself, often)

@@ -132,3 +132,31 @@ def test_the_words_that_introduce_a_partner_still_say_what_it_was_doing() -> Non
 def test_a_partner_named_by_a_body_word_is_that_kind(user: str, kind: VehicleKind) -> None:
     s = read(f"A Waymo AV was stopped at a red light on Oak Street. {user} made contact with the rear of the Waymo AV.")
     assert partner(s) is kind
+
+
+@pytest.mark.parametrize(
+    "named",
+    [
+        "A Nuro Prius operating in manual mode",
+        "A Nuro Prius operating in autonomous mode",
+        "The Waymo Pacifica, in autonomous mode,",
+        "A Cruise Bolt with its ADS engaged",
+    ],
+)
+def test_a_fleets_name_before_a_cars_model_is_the_automated_vehicle(named: str) -> None:
+    fleet, model = named.split()[1:3]
+    model = model.rstrip(",")
+    s = read(
+        f"{named} was stopped at a red light on Oak Street. A sedan traveling behind the {fleet} {model} made "
+        f"contact with the rear of the {fleet} {model}."
+    )
+    assert partner(s) is VehicleKind.CAR
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+def test_a_carmakers_name_before_its_model_is_no_fleet() -> None:
+    s = read(
+        "A Toyota Prius was traveling north on Oak Street. A Zoox vehicle in autonomous mode was stopped at a red "
+        "light ahead of it. The Toyota Prius made contact with the rear of the Zoox vehicle."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
