@@ -247,6 +247,11 @@ def _head(m: re.Match[str]) -> str:
     return _SAME.get(m.group(1).lower(), m.group(1).lower())
 
 
+# Prepositions of place: what follows says where a road user was ("behind the heavy truck", "between V1 and a
+# parked car"), not who met whom.
+PLACE = re.compile(r"\b(?:behind|ahead of|in front of|next to|beside|alongside|between(?: \S+ and)?)\s+$", re.I)
+
+
 def _others(text: str) -> list[tuple[str, str]]:
     """The other road users in the first impact, as (kind, words first said), in the order it names them."""
     sents = sentences(text)
@@ -269,8 +274,11 @@ def _others(text: str) -> list[tuple[str, str]]:
                 continue
             if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
                 users.append((_head(m), m.group()))
+        # a road user that only says where another was ("traveling directly behind the heavy truck", "pass between
+        # V1 and a parked passenger vehicle") is no party, when the sentence names one besides
+        placed = [u for u in users if PLACE.search(sentence[: sentence.find(u[1])])]
         if users:
-            return users
+            return [u for u in users if u not in placed] or users
         if other := _OTHER.search(sentence):  # "the other driver made contact with V1": a vehicle, unnamed
             return [("vehicle", other.group())]
         if make := _MAKE.search(sentence):  # "struck from behind by a red Toyota": a make names a vehicle

@@ -11,7 +11,7 @@ from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.compiler.frontend.crash import MOVED_INTO
 from sovarc.compiler.frontend.labels import drivers_vehicles, police_labels
 from sovarc.compiler.frontend.lexicon import IMPACT_NOUNS, IMPACT_VERBS, IMPACT_WORD, Form, forms, striking, struck
-from sovarc.compiler.frontend.names import THING, parties
+from sovarc.compiler.frontend.names import PLACE, THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
@@ -215,7 +215,8 @@ def name_parked(text: str) -> str:
     sents = sentences(text)
     impact = first_impact(sents)
     m = _PARKED.search(sents[impact]) if impact >= 0 else None
-    if m is None or re.search(r"\bV\d,? $", sents[impact][: m.start()]):
+    # (not one that says where another was: "pass between V1 and a parked passenger vehicle")
+    if m is None or re.search(r"\bV\d,? $", sents[impact][: m.start()]) or PLACE.search(sents[impact][: m.start()]):
         return text
     taken = [int(n) for n in re.findall(r"\bV(\d)\b", text)]
     return text.replace(m.group(), f"V{max(taken, default=0) + 1}, {m.group()},", 1)

@@ -160,3 +160,30 @@ def test_a_carmakers_name_before_its_model_is_no_fleet() -> None:
         "light ahead of it. The Toyota Prius made contact with the rear of the Zoox vehicle."
     )
     assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+@pytest.mark.parametrize(
+    ("where", "kind"),
+    [
+        ("traveling directly behind a heavy truck", VehicleKind.CAR),
+        ("traveling in the right lane behind the box truck the Waymo AV had yielded to", VehicleKind.CAR),
+        ("passing between the Waymo AV and a parked passenger vehicle", VehicleKind.CAR),
+        ("traveling next to a city bus", VehicleKind.CAR),
+        ("stopped in front of a pickup truck", VehicleKind.CAR),
+        ("traveling alongside a parked van", VehicleKind.CAR),
+    ],
+)
+def test_a_road_user_that_only_says_where_the_partner_was_is_no_party(where: str, kind: VehicleKind) -> None:
+    s = read(
+        "A Waymo AV was stopped at a red light on Oak Street, yielding to a box truck. "
+        f"A sedan {where} made contact with the rear of the Waymo AV."
+    )
+    assert partner(s) is kind
+
+
+def test_a_road_user_said_where_it_was_and_then_meeting_the_automated_vehicle_is_the_partner() -> None:
+    s = read(
+        "A Waymo AV was stopped on Oak Street behind a box truck when the box truck reversed and made contact with "
+        "the front of the Waymo AV."
+    )
+    assert partner(s) is VehicleKind.TRUCK
