@@ -93,6 +93,10 @@ _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LAB
 # ("the contact area", "the point of impact area": a place on a body, the name of a form's field, not a meeting)
 # (not "a collision": a summary's, `_SUMMARY`, read only where no sentence says how the parties met)
 _IMPACT = re.compile(r"\b(?:" + stems(MEETING_NOUNS) + "|" + INTO_ANYTHING + r")\b", re.I)
+# The colours a road user is told apart by ("a white sedan" and "a black sedan" are two).
+COLOUR = re.compile(
+    r"\b(?:white|black|silver|gr[ae]y|red|blue|green|yellow|orange|brown|gold|tan|beige|maroon|purple)\b", re.I
+)
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
 _SUMMARY = SUMMARY
 _OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
@@ -104,12 +108,17 @@ THING = re.compile(
 )
 
 
-def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False, said: list[str] | None = None) -> str:
+def _replace_phrase(
+    text: str, phrase: str, pid: str, introduced: bool = False, said: list[str] | None = None, colour: str = ""
+) -> str:
     """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id; a make with the
     model and kind said after it ("the Ford Taurus sedan"). `introduced`: not the words of an introduction kept
-    beside the id ("V2, a 1994 Ford Taurus,"). `said` collects the words replaced."""
+    beside the id ("V2, a 1994 Ford Taurus,"). `said` collects the words replaced. `colour`: the party's, which
+    tells it apart from another of its kind said with another ("a black sedan" is not "the white sedan")."""
 
     def put(m: re.Match[str]) -> str:
+        if colour and (other := COLOUR.search(m.group())) and other.group().lower() != colour:
+            return m.group()
         if said is not None:
             said.append(m.group())
         return pid
@@ -382,15 +391,16 @@ def _number(
             continue
         head, tail = text[: max(start, 0)], text[max(start, 0) :]
         said: list[str] = []  # every phrase that now says this party
+        hue = m[0].lower() if (m := COLOUR.search(words)) else ""
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            tail = _replace_phrase(tail, words_for, pid, introduced, said)
+            tail = _replace_phrase(tail, words_for, pid, introduced, said, hue)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced, said)  # "the car" for "a passenger car"
+            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced, said, hue)  # "the car": "a passenger car"
         if (generic := _GENERIC.get(kind.lower())) and not any(_generic(k) == generic for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, generic, pid, introduced, said)  # "the truck" for "a tractor-trailer"
+            tail = _replace_phrase(tail, generic, pid, introduced, said, hue)  # "the truck" for "a tractor-trailer"
         model = re.search(re.escape(kind) + r" ((?-i:[A-Z][a-z][\w-]*))\b", words) if kind[:1].isupper() else None
         if model and not any(model[1] in w for k, w in others if k != kind):
-            tail = _replace_phrase(tail, model[1], pid, introduced, said)  # "the Civic" for "a Honda Civic"
+            tail = _replace_phrase(tail, model[1], pid, introduced, said, hue)  # "the Civic" for "a Honda Civic"
         text = head + tail
         # "a passenger vehicle ... The vehicle made contact": the kind its other words say (see `kinds.said_kind`)
         words_of[pid] = said_kind(words_of[pid], said)

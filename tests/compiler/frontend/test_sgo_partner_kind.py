@@ -187,3 +187,15 @@ def test_a_road_user_said_where_it_was_and_then_meeting_the_automated_vehicle_is
         "the front of the Waymo AV."
     )
     assert partner(s) is VehicleKind.TRUCK
+
+
+@pytest.mark.parametrize(("one", "other"), [("white", "black"), ("silver", "red"), ("gray", "blue")])
+def test_two_road_users_of_one_kind_told_apart_by_colour_are_two(one: str, other: str) -> None:
+    s = read(
+        f"A Waymo AV was traveling north on Oak Street. A {one} sedan was stopped at a red light ahead of the "
+        f"Waymo AV, and the Waymo AV stopped behind the {one} sedan. A {other} sedan traveling north approached "
+        f"from behind and made contact with the rear of the Waymo AV. The {one} sedan then drove away."
+    )
+    cp = parties(s)[1]
+    assert cp is not None and [p.id for p in s.participants] == ["V1", cp.id]
+    assert isinstance(cp.actions, tuple) and [a.kind.value for a in cp.actions] == ["follow_lane"]
