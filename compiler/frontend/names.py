@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.antecedent import name_antecedent
 from sovarc.compiler.frontend.kinds import kind_named, said_kind
 from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETING_NOUNS, stems
 from sovarc.compiler.frontend.overview import SUMMARY, name_overview, overview_users
@@ -347,6 +348,7 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     others = _others(text)
     text, named, words_of = _number(text, others, {"V1": said})
     text, words_of = name_overview(text, words_of, _USER)
+    text, words_of = name_antecedent(text, words_of, _USER)
     note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
     if named:
         note += "; the other road users in the first impact are " + ", ".join(named)

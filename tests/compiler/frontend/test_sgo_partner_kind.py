@@ -199,3 +199,27 @@ def test_two_road_users_of_one_kind_told_apart_by_colour_are_two(one: str, other
     cp = parties(s)[1]
     assert cp is not None and [p.id for p in s.participants] == ["V1", cp.id]
     assert isinstance(cp.actions, tuple) and [a.kind.value for a in cp.actions] == ["follow_lane"]
+
+
+@pytest.mark.parametrize(
+    ("introduced", "kind"),
+    [("A minivan", VehicleKind.VAN), ("A city bus", VehicleKind.BUS), ("A motorcycle", VehicleKind.MOTORCYCLE)],
+)
+def test_the_vehicle_said_with_nothing_picking_it_out_is_the_road_user_introduced_before_it(
+    introduced: str, kind: VehicleKind
+) -> None:
+    s = read(
+        "A Waymo AV was traveling north on Oak Street in autonomous mode. "
+        f"{introduced} in the oncoming lane veered out of its lane and into the northbound lane. "
+        "The vehicle made contact with the left rear door of the Waymo AV."
+    )
+    assert partner(s) is kind
+
+
+def test_the_vehicle_a_phrase_picks_out_is_not_the_road_user_introduced_before_it() -> None:
+    s = read(
+        "A Waymo AV was stopped at a red light on Oak Street behind a box truck. The vehicle behind the Waymo AV "
+        "made contact with the rear of the Waymo AV."
+    )
+    cp = parties(s)[1]
+    assert cp is not None and cp.kind is UNKNOWN
