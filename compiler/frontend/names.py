@@ -461,7 +461,7 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
             continue
         users: list[tuple[str, str]] = []
         for kind, words, _ in _users_in(sentence):
-            if kind.lower() not in [k.lower() for k, _ in users]:
+            if _told(kind, words) not in [_told(*u) for u in users]:
                 users.append((kind, words))
         # every mention up to the impact, in order; those that introduce a road user ("a", "another")
         said = [(j, *u) for j in range(start, i + 1) for u in _users_in(sents[j])]
@@ -479,17 +479,27 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
             before = [(k, w) for j, k, w in new if j < i and k.lower() not in [u.lower() for u, _ in users]]
             users = before[-1:] + users
         for kind, _ in users:
-            if len(alike := [w for _, k, w in new if k.lower() == kind.lower()]) > 1:
+            alike = [w for _, k, w in new if k.lower() == kind.lower()]
+            # (unless each is told by its own colour: "a white Toyota" and "a black Toyota" are two)
+            hues = [_told(kind, w)[1] for w in alike]
+            if len(alike) > 1 and not (all(hues) and len(set(hues)) == len(hues)):
                 return alike[1]  # a second of one kind or make: its later mentions cannot be told apart
         if not users:
             continue
         # each by the words that introduced it ("a 1984 Yamaha motorcycle", not "the Yamaha"), in the order the
-        # report first names them
+        # report first names them; one told by its colour by the words with that colour
         order = {k.lower(): n for n, (_, k, _, _) in reversed(list(enumerate(said)))}
+        order_told = {_told(k, w): n for n, (_, k, w, _) in reversed(list(enumerate(said)))}
         intro = {k.lower(): w for _, k, w in reversed(new)}
-        users = [(k, intro.get(k.lower(), w)) for k, w in users]
-        return sorted(users, key=lambda u: order.get(u[0].lower(), len(said)))
+        intro_told = {_told(k, w): w for _, k, w in reversed(new)}
+        users = [(k, intro_told.get(_told(k, w)) or intro.get(k.lower(), w)) for k, w in users]
+        return sorted(users, key=lambda u: order_told.get(_told(*u), order.get(u[0].lower(), len(said))))
     return []
+
+
+def _told(kind: str, words: str) -> tuple[str, str]:
+    """A road user's kind, and the colour its words tell it apart by ("" when none)."""
+    return kind.lower(), m.group().lower() if (m := COLOUR.search(words)) else ""
 
 
 def _bare_intro(words: str) -> bool:

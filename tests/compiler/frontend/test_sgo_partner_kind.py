@@ -1,11 +1,16 @@
 """Who the partner is and what kind (issue 18, sgo10c), on sentences written for these tests: a partner told with
-no kind, or a wider one, whose kind another of its mentions or the narrative's overview says."""
+no kind, or a wider one, whose kind another of its mentions, the narrative's overview or the road user introduced
+before it says; body words; a fleet's name before a model; road users that only say where another was; two of one
+kind told apart by colour, and the refusal where nothing tells them apart."""
 
 from __future__ import annotations
 
 import pytest
 from sovarc.compiler.evaluation.sgo import parties
+from sovarc.compiler.frontend import FrontEnd
+from sovarc.compiler.frontend.choice import FrontEndError
 from sovarc.dsl.ir import UNKNOWN, Scenario, VehicleKind
+from sovarc.dsl.span import Source
 
 from tests.compiler.frontend.sgo_reading import read
 
@@ -223,3 +228,30 @@ def test_the_vehicle_a_phrase_picks_out_is_not_the_road_user_introduced_before_i
     )
     cp = parties(s)[1]
     assert cp is not None and cp.kind is UNKNOWN
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A white Toyota was stopped at the light on Oak Street. A black Toyota struck the white Toyota from behind.",
+        "A red sedan was stopped at the light on Oak Street. A blue sedan traveling north struck the red sedan from "
+        "behind.",
+    ],
+)
+def test_two_road_users_of_one_make_or_kind_told_apart_by_colour_are_read_in_any_report(text: str) -> None:
+    s = read(text)
+    assert [p.id for p in s.participants] == ["V1", "V2"]
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A Toyota was stopped at the light. Another Toyota struck the Toyota from behind.",
+        "A white Toyota was stopped at the light. A white Toyota struck the white Toyota from behind.",
+        "A white Toyota was stopped at the light. Another Toyota struck the Toyota from behind.",
+    ],
+)
+def test_two_road_users_no_reading_tells_apart_are_refused_naming_the_file_and_the_reason(text: str) -> None:
+    with pytest.raises(FrontEndError, match=r"alike\.txt: two road users are named alike"):
+        FrontEnd("none").extract(Source("alike.txt", text))
