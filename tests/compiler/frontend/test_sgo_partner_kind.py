@@ -255,3 +255,41 @@ def test_two_road_users_of_one_make_or_kind_told_apart_by_colour_are_read_in_any
 def test_two_road_users_no_reading_tells_apart_are_refused_naming_the_file_and_the_reason(text: str) -> None:
     with pytest.raises(FrontEndError, match=r"alike\.txt: two road users are named alike"):
         FrontEnd("none").extract(Source("alike.txt", text))
+
+
+@pytest.mark.parametrize(
+    ("told", "kind"),
+    [
+        (
+            "Shortly after the Waymo AV came to a stop, the SUV behind the Waymo AV was rear-ended by a pickup truck, "
+            "and the SUV then made contact with the rear of the Waymo AV.",
+            VehicleKind.CAR,
+        ),
+        (
+            "A minivan traveling behind the Waymo AV was struck by a box truck, and the minivan then struck the rear "
+            "of the Waymo AV.",
+            VehicleKind.VAN,
+        ),
+        (
+            "The city bus behind the Waymo AV was hit by a sedan; the city bus then made contact with the rear of "
+            "the Waymo AV.",
+            VehicleKind.BUS,
+        ),
+    ],
+)
+def test_in_a_chain_the_partner_is_the_one_in_the_automated_vehicles_own_meeting(told: str, kind: VehicleKind) -> None:
+    s = read(
+        "A Waymo Autonomous Vehicle was traveling west on Oak Street in autonomous mode and stopped for a red "
+        f"light. {told}"
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+    assert next(p for p in s.participants if p.id == "V2").kind is kind
+
+
+def test_a_first_clause_that_tells_no_meeting_is_not_cut_off() -> None:
+    s = read(
+        "A Waymo AV was stopped at a red light on Oak Street. A sedan traveling behind the Waymo AV braked late, "
+        "and struck the rear of the Waymo AV."
+    )
+    assert (s.crash.striker, s.crash.victim) == ("V2", "V1")
+    assert partner(s) is VehicleKind.CAR
