@@ -421,6 +421,35 @@ def _pushed_into_v1(sentence: str, crash: Crash, tower: str | None) -> Crash:
     return pushed if pushed is not None and "V1" in (pushed.striker, pushed.victim) else crash
 
 
+# "V2 behind V1 was rear-ended by V3, and V2 then made contact with the rear of V1": two meetings told one after
+# the other; where the first names V1 only as where another was (see `names.PLACE`), V1's is the one after it.
+_THEN_AND = re.compile(r",? and (?=(?:then )?(?:the |its )?\w)|; ", re.I)
+_WHEN = re.compile(r"^(?:\w+ )?(?:after|when|as|while|before|once)\b[^,]*, ", re.I)
+V1_PLACED = re.compile(r"\b(?:behind|ahead of|in front of|next to|beside|alongside) V1\b")
+
+
+def own_meeting(sentence: str) -> str:
+    """The part of an impact sentence that tells V1's own meeting: from the first clause that names V1 as a party,
+    when an earlier one names V1 only as a place (see `_THEN_AND`); else the sentence."""
+    cuts = [0, *(m.end() for m in _THEN_AND.finditer(sentence))]
+    first = sentence[: cuts[1]] if len(cuts) > 1 else sentence
+    first = _WHEN.sub("", first)  # (not a clause that sets the time: "Shortly after V1 came to a stop, ...")
+    if len(cuts) < 2 or not V1_PLACED.search(first) or re.search(r"\bV1\b", V1_PLACED.sub("", first)):
+        return sentence
+    if not (_ACTIVE.search(first) or _AGENT.search(first)):
+        return sentence  # (the first tells no meeting: "V2 behind V1 braked late, and struck V1")
+    # (a later clause with its own subject: "and V2 then made contact with the rear of V1")
+    later = next(
+        (
+            at
+            for at in cuts[1:]
+            if re.match(r"(?:then )?" + _V + r"\b", sentence[at:]) and re.search(r"\bV1\b", sentence[at:])
+        ),
+        None,
+    )
+    return sentence if later is None else sentence[later:]
+
+
 def read_crash(sents: list[str], impact: int, carry: str | None = None) -> Crash:
     """The first impact's crash: read from its sentence (index `impact`), else from a later sentence that
     restates it, else from an earlier one that says "head-on"."""
@@ -435,7 +464,7 @@ def read_crash_at(
     order = [impact, *range(impact + 1, len(sents))] if 0 <= impact < len(sents) else list(range(len(sents)))
     tower = towing(sents)
     for i in order:
-        crash = read_sentence(sents[i], carry if i == impact else None, tower, backing)
+        crash = read_sentence(own_meeting(sents[i]), carry if i == impact else None, tower, backing)
         if crash is not None:
             return _pushed_into_v1(sents[i], crash, tower), i
     if (said := next((i for i, s in enumerate(sents[: impact + 1]) if _HEAD_ON.search(s)), None)) is not None:

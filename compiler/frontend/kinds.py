@@ -78,3 +78,22 @@ def stated_kinds(named: str, words: dict[str, str]) -> dict[str, tuple[VehicleKi
         if pid.startswith("V") and pid not in kinds and (found := kind_named(said)) is not None:
             kinds[pid] = (found[0], None)
     return kinds
+
+
+# A kind English also calls by a wider one: a pickup is "the truck" too ("a pick-up truck ... the oncoming truck").
+_WIDER = {VehicleKind.PICKUP: VehicleKind.TRUCK}
+
+
+def said_kind(words: str, said: list[str]) -> str:
+    """The words a road user was named by (`words`), with the noun that says its kind when another phrase the
+    report calls it by (`said`) says it better. A later mention often names no kind, or a wider one ("a passenger
+    vehicle ... The vehicle made contact", "a pick-up truck ... the oncoming truck"): the phrases that name one say
+    it, when they agree (a pickup and "the truck" agree, as a pickup). The noun is added in brackets ("the
+    oncoming truck (pick-up truck)"), so what `words` say of the road user besides ("oncoming") stays said."""
+    named = [(found[0], phrase[found[1] : found[2]]) for phrase in (words, *said) if (found := kind_named(phrase))]
+    kinds = {kind for kind, _ in named}
+    kinds -= {_WIDER[kind] for kind in kinds if _WIDER.get(kind) in kinds}
+    own = kind_named(words)
+    if len(kinds) != 1 or (own is not None and own[0] in kinds):
+        return words
+    return f"{words} ({next(noun for kind, noun in named if kind in kinds)})"

@@ -14,21 +14,25 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.kinds import kind_named
+from sovarc.compiler.frontend.antecedent import name_antecedent
+from sovarc.compiler.frontend.kinds import kind_named, said_kind
 from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETING_NOUNS, stems
-from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, bare, narrator, partner
+from sovarc.compiler.frontend.overview import SUMMARY, name_overview, overview_users
+from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, MAKES, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
 _MODS = r"(?:" + _STOP + r"[\w.'-]+\s+){0,3}?"  # (a line may break inside the phrase)
-# Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle).
+# Road users by kind, longest first (kinds.py says which vehicle kind each is; a cyclist is a vehicle): the body
+# words kinds.py knows ("a crossover", "a semi", "an e-bike"), and vehicles of a trade ("an ambulance").
 _KINDS = (
     r"passenger car|passenger vehicle|pick-?up truck|box truck|heavy truck|semi-truck|semi truck|"
-    r"tractor[- ]trailer|school bus|"
+    r"tractor[- ]trailer|semi-trailer|18-wheeler|school bus|station wagon|"
     r"motor coach|sport utility vehicle|pickup|minivan|van|suv|sedan|hatchback|coupe|wagon|truck|bus|"
-    r"taxicab|taxi|convertible|limousine|ambulance|"  # (the nouns kinds.py knows, and vehicles of a trade)
-    r"motorcycle|motorcyclist|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|bicycle|bike"
+    r"taxicab|taxi|convertible|limousine|ambulance|crossover|jeep|semi|"
+    r"motorcycle|motorcyclist|motorbike|moped|scooter|car|vehicle|pedestrian|bicyclist|cyclist|pedalcyclist|"
+    r"bicycle|e-?bike|bike"
 )
 _PEOPLE = frozenset(("pedestrian",))
 _PEDESTRIAN = re.compile(r"\bpedestrian\b", re.I)
@@ -76,6 +80,13 @@ _BRAND_OF = (
     r"|technicians?|dealer\w*|depot|facility|app|rider|passengers?|specialists?|personnel"
 )
 _AUTONOMY = re.compile(r"\bautonom|\bADS\b|\bself-driving\b|\bdriverless\b|\bautomated driving\b|\bmanual mode\b", re.I)
+# A fleet's name before a car's model, in a sentence saying it drove itself or was in manual mode ("a Nuro Prius
+# operating in manual mode", "the Waymo Pacifica was in autonomous mode"): the automated vehicle, named as `_BRAND`
+# names it, the model standing for the noun. A carmaker's name before its model is a car ("a Toyota Prius").
+_FLEET_MODEL = re.compile(
+    r"\b(?i:an?|the) (?!(?:" + MAKES + r")\b)([A-Z][\w.-]+) ([A-Z][a-z][\w-]*)\b(?![\w-])"
+    r"(?=[^.]*(?i:" + _AUTONOMY.pattern + r"))"
+)
 
 # "(Vehicle 1)", "(V2)", "("Vehicle #1")"
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
@@ -83,8 +94,12 @@ _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LAB
 # ("the contact area", "the point of impact area": a place on a body, the name of a form's field, not a meeting)
 # (not "a collision": a summary's, `_SUMMARY`, read only where no sentence says how the parties met)
 _IMPACT = re.compile(r"\b(?:" + stems(MEETING_NOUNS) + "|" + INTO_ANYTHING + r")\b", re.I)
+# The colours a road user is told apart by ("a white sedan" and "a black sedan" are two).
+COLOUR = re.compile(
+    r"\b(?:white|black|silver|gr[ae]y|red|blue|green|yellow|orange|brown|gold|tan|beige|maroon|purple)\b", re.I
+)
 # A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
-_SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
+_SUMMARY = SUMMARY
 _OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
 THING = re.compile(
@@ -94,10 +109,21 @@ THING = re.compile(
 )
 
 
-def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) -> str:
+def _replace_phrase(
+    text: str, phrase: str, pid: str, introduced: bool = False, said: list[str] | None = None, colour: str = ""
+) -> str:
     """Every mention of a party by its words ("the blue SUV", "a SUV", "the SUV's") as its id; a make with the
     model and kind said after it ("the Ford Taurus sedan"). `introduced`: not the words of an introduction kept
-    beside the id ("V2, a 1994 Ford Taurus,")."""
+    beside the id ("V2, a 1994 Ford Taurus,"). `said` collects the words replaced. `colour`: the party's, which
+    tells it apart from another of its kind said with another ("a black sedan" is not "the white sedan")."""
+
+    def put(m: re.Match[str]) -> str:
+        if colour and (other := COLOUR.search(m.group())) and other.group().lower() != colour:
+            return m.group()
+        if said is not None:
+            said.append(m.group())
+        return pid
+
     after = r"(?-i:(?:[- ][A-Z0-9][\w.-]*)*)(?:\s+(?:" + _KINDS + r"))?" if phrase[:1].isupper() else ""
     return re.sub(
         (r"(?<![VP]\d, )" if introduced else "")
@@ -111,7 +137,7 @@ def _replace_phrase(text: str, phrase: str, pid: str, introduced: bool = False) 
         + after
         + r"\b(?![\w-])"
         + _NOT_USER,
-        pid,
+        put,
         text,
         flags=re.I,
     )
@@ -149,6 +175,8 @@ def _automated(text: str) -> tuple[str, str] | None:
     """Every mention of the automated vehicle as V1, and the words first used for it."""
     first = _AV.search(text)
     brand = _BRAND.search(text) if _AUTONOMY.search(text) else None
+    if brand is None and first is None:
+        brand = _FLEET_MODEL.search(text)
     if first is None and brand is None:
         return None
     numbers = [m.group(1) for m in _FLEET_NUMBER.finditer(text)]
@@ -229,6 +257,11 @@ def _head(m: re.Match[str]) -> str:
     return _SAME.get(m.group(1).lower(), m.group(1).lower())
 
 
+# Prepositions of place: what follows says where a road user was ("behind the heavy truck", "between V1 and a
+# parked car"), not who met whom.
+PLACE = re.compile(r"\b(?:behind|ahead of|in front of|next to|beside|alongside|between(?: \S+ and)?)\s+$", re.I)
+
+
 def _others(text: str) -> list[tuple[str, str]]:
     """The other road users in the first impact, as (kind, words first said), in the order it names them."""
     sents = sentences(text)
@@ -251,14 +284,24 @@ def _others(text: str) -> list[tuple[str, str]]:
                 continue
             if _head(m) not in [h for h, _ in users] and not _OTHER.fullmatch(m.group()):
                 users.append((_head(m), m.group()))
+        # a road user that only says where another was ("traveling directly behind the heavy truck", "pass between
+        # V1 and a parked passenger vehicle") is no party, when the sentence names one besides
+        placed = [u for u in users if PLACE.search(sentence[: sentence.find(u[1])])]
         if users:
-            return users
+            return [u for u in users if u not in placed] or users
         if other := _OTHER.search(sentence):  # "the other driver made contact with V1": a vehicle, unnamed
             return [("vehicle", other.group())]
         if make := _MAKE.search(sentence):  # "struck from behind by a red Toyota": a make names a vehicle
             return [(make.group(1), make.group("words"))]
-        # else the last road user introduced before it: "a passenger car", not "the vehicle", which points back to
-        # one already named (the automated vehicle itself, often)
+        # "A Toyota Prius was traveling north ... The Toyota Prius made contact": one a make introduced before it
+        made = [m for s in sents[:i] for m in _MAKE.finditer(s) if re.search(r"\b[Tt]he " + m[2] + r"\b", sentence)]
+        if made:
+            return [(made[-1].group(1), made[-1].group("words"))]
+        # the road user the overview names ("was in a collision involving a heavy truck"), when it names one; else
+        # the last road user introduced before it: "a passenger car", not "the vehicle", which points back to one
+        # already named (the automated vehicle itself, often)
+        if told := overview_users(sents, _USER):
+            return [(_head(told[0]), told[0].group())]
         before = [m for s in sents[:i] for m in _USER.finditer(s) if not m.group().lower().startswith("the ")]
         return [(_head(before[-1]), before[-1].group())] if before else []
     return []
@@ -304,6 +347,8 @@ def parties(text: str) -> tuple[str, str | None, dict[str, str]]:
     text, said = automated
     others = _others(text)
     text, named, words_of = _number(text, others, {"V1": said})
+    text, words_of = name_overview(text, words_of, _USER)
+    text, words_of = name_antecedent(text, words_of, _USER)
     note = f"participants numbered by rule: the automated vehicle ('{said}') is V1"
     if named:
         note += "; the other road users in the first impact are " + ", ".join(named)
@@ -347,16 +392,20 @@ def _number(
             text = _OTHER.sub(pid, text)
             continue
         head, tail = text[: max(start, 0)], text[max(start, 0) :]
+        said: list[str] = []  # every phrase that now says this party
+        hue = m[0].lower() if (m := COLOUR.search(words)) else ""
         for words_for in (kind, *(k for k, canonical in _SAME.items() if canonical == kind)):
-            tail = _replace_phrase(tail, words_for, pid, introduced)
+            tail = _replace_phrase(tail, words_for, pid, introduced, said, hue)
         if len(kind.split()) > 1 and not any(kind.split()[-1] == k for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced)  # "the car" for "a passenger car"
+            tail = _replace_phrase(tail, kind.split()[-1], pid, introduced, said, hue)  # "the car": "a passenger car"
         if (generic := _GENERIC.get(kind.lower())) and not any(_generic(k) == generic for k, _ in others if k != kind):
-            tail = _replace_phrase(tail, generic, pid, introduced)  # "the truck" for "a tractor-trailer"
+            tail = _replace_phrase(tail, generic, pid, introduced, said, hue)  # "the truck" for "a tractor-trailer"
         model = re.search(re.escape(kind) + r" ((?-i:[A-Z][a-z][\w-]*))\b", words) if kind[:1].isupper() else None
         if model and not any(model[1] in w for k, w in others if k != kind):
-            tail = _replace_phrase(tail, model[1], pid, introduced)  # "the Civic" for "a Honda Civic"
+            tail = _replace_phrase(tail, model[1], pid, introduced, said, hue)  # "the Civic" for "a Honda Civic"
         text = head + tail
+        # "a passenger vehicle ... The vehicle made contact": the kind its other words say (see `kinds.said_kind`)
+        words_of[pid] = said_kind(words_of[pid], said)
         if role == "V" and len([k for k, _ in others if k not in _PEOPLE]) == 1:
             text = _OTHER.sub(pid, text)
     return text, named, words_of
@@ -412,7 +461,7 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
             continue
         users: list[tuple[str, str]] = []
         for kind, words, _ in _users_in(sentence):
-            if kind.lower() not in [k.lower() for k, _ in users]:
+            if _told(kind, words) not in [_told(*u) for u in users]:
                 users.append((kind, words))
         # every mention up to the impact, in order; those that introduce a road user ("a", "another")
         said = [(j, *u) for j in range(start, i + 1) for u in _users_in(sents[j])]
@@ -430,17 +479,27 @@ def _impact_users(text: str, v1: bool) -> list[tuple[str, str]] | str:
             before = [(k, w) for j, k, w in new if j < i and k.lower() not in [u.lower() for u, _ in users]]
             users = before[-1:] + users
         for kind, _ in users:
-            if len(alike := [w for _, k, w in new if k.lower() == kind.lower()]) > 1:
+            alike = [w for _, k, w in new if k.lower() == kind.lower()]
+            # (unless each is told by its own colour: "a white Toyota" and "a black Toyota" are two)
+            hues = [_told(kind, w)[1] for w in alike]
+            if len(alike) > 1 and not (all(hues) and len(set(hues)) == len(hues)):
                 return alike[1]  # a second of one kind or make: its later mentions cannot be told apart
         if not users:
             continue
         # each by the words that introduced it ("a 1984 Yamaha motorcycle", not "the Yamaha"), in the order the
-        # report first names them
+        # report first names them; one told by its colour by the words with that colour
         order = {k.lower(): n for n, (_, k, _, _) in reversed(list(enumerate(said)))}
+        order_told = {_told(k, w): n for n, (_, k, w, _) in reversed(list(enumerate(said)))}
         intro = {k.lower(): w for _, k, w in reversed(new)}
-        users = [(k, intro.get(k.lower(), w)) for k, w in users]
-        return sorted(users, key=lambda u: order.get(u[0].lower(), len(said)))
+        intro_told = {_told(k, w): w for _, k, w in reversed(new)}
+        users = [(k, intro_told.get(_told(k, w)) or intro.get(k.lower(), w)) for k, w in users]
+        return sorted(users, key=lambda u: order_told.get(_told(*u), order.get(u[0].lower(), len(said))))
     return []
+
+
+def _told(kind: str, words: str) -> tuple[str, str]:
+    """A road user's kind, and the colour its words tell it apart by ("" when none)."""
+    return kind.lower(), m.group().lower() if (m := COLOUR.search(words)) else ""
 
 
 def _bare_intro(words: str) -> bool:

@@ -8,10 +8,10 @@ from dataclasses import dataclass, field
 
 from sovarc.compiler.frontend.capitals import sentence_case
 from sovarc.compiler.frontend.choice import FrontEndError
-from sovarc.compiler.frontend.crash import MOVED_INTO
+from sovarc.compiler.frontend.crash import MOVED_INTO, V1_PLACED
 from sovarc.compiler.frontend.labels import drivers_vehicles, police_labels
 from sovarc.compiler.frontend.lexicon import IMPACT_NOUNS, IMPACT_VERBS, IMPACT_WORD, Form, forms, striking, struck
-from sovarc.compiler.frontend.names import THING, parties
+from sovarc.compiler.frontend.names import PLACE, THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
@@ -215,7 +215,8 @@ def name_parked(text: str) -> str:
     sents = sentences(text)
     impact = first_impact(sents)
     m = _PARKED.search(sents[impact]) if impact >= 0 else None
-    if m is None or re.search(r"\bV\d,? $", sents[impact][: m.start()]):
+    # (not one that says where another was: "pass between V1 and a parked passenger vehicle")
+    if m is None or re.search(r"\bV\d,? $", sents[impact][: m.start()]) or PLACE.search(sents[impact][: m.start()]):
         return text
     taken = [int(n) for n in re.findall(r"\bV(\d)\b", text)]
     return text.replace(m.group(), f"V{max(taken, default=0) + 1}, {m.group()},", 1)
@@ -302,10 +303,15 @@ def own_impact(sents: list[str], impact: int) -> int:
     that, the SUV swerved into V1"), the first later sentence whose impact clause names V1, for the scenario is
     V1's crash; else `impact`. A pronoun in the impact clause may be V1 ("when it made contact with V2"): then
     the impact stays."""
-    if impact < 0 or re.search(_V1_MET + r"|\b(?:it|its|they|them)\b", impact_clause(sents[impact]), re.I):
+    if impact < 0 or re.search(_V1_MET + r"|\b(?:it|its|they|them)\b", _unplaced(sents[impact]), re.I):
         return impact
     later = (i for i in range(impact + 1, len(sents)) if describes_impact(sents[i]))
-    return next((i for i in later if re.search(_V1_MET, impact_clause(sents[i]))), impact)
+    return next((i for i in later if re.search(_V1_MET, _unplaced(sents[i]))), impact)
+
+
+def _unplaced(sentence: str) -> str:
+    """The impact clause without V1 where it only says where another was ("V2 behind V1 was hit by V3")."""
+    return V1_PLACED.sub("", impact_clause(sentence))
 
 
 # V1 as a party of an impact clause, not as the owner of a place another crossed ("turned left across V1's path
