@@ -43,6 +43,8 @@ LANE_LINE = (
 # A lane of the other direction, from the vehicle's point of view: "the oncoming lane", "the opposing lane of
 # travel", "the opposite traffic lanes".
 _OPPOSING_LANE = r"(?:oncoming|opposing|opposite)(?: direction| traffic| travel)? (?:travel )?lanes?\b"
+# Where a merge into a road's lanes comes from: "from the on-ramp", "from an acceleration lane".
+MERGE_FROM = r"|\bfrom (?:the |an? )?(?:[\w-]+ )?(?:on-?ramp|entrance ramp|acceleration lane|merge lane)\b"
 # The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
 # in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
 # from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
@@ -89,7 +91,8 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\blane[- ]chang(?:es?|ed|ing)\b(?! lanes?\b)"
             r"|\bmerg(?:es?|ed|ing)\b"
             # cutting in is moving into a lane just ahead of one in it: "cut in front of V1", "cut in ahead of it"
-            r"|\bcut(?:s|ting)? (?:back )?in\b(?!to\b)",
+            r"|\bcut(?:s|ting)? (?:back )?in\b(?!to\b)" + MERGE_FROM,
+            # coming onto a road from its on-ramp is merging into its lanes: "entering the freeway from the on-ramp"
             re.I,
         ),
     ),
@@ -118,8 +121,9 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # into another's lane, however intruding: "encroached on V1's lane", "encroaching upon its lane"
             + r"|\b(?:encroach|intrud)\w* (?:on|upon|in|into) (?:[VP]\d's|the|its) (?:travel )?lane\b"
             # over a lane line of its own direction: "crossed the dashed lane line", "crossing over a solid white
-            # line" (not the centre line, and not "the lane line on the left side", a coded departure to the left)
-            r"|\bcross(?:ed|ing|es)? (?:over )?" + LANE_LINE + r"(?! (?:to|on) (?:the )?left)",
+            # line", "veered across the lane line" (not the centre line, and not "the lane line on the left side", a
+            # coded departure to the left)
+            r"|\b(?:cross(?:ed|ing|es)? (?:over )?|across |over )" + LANE_LINE + r"(?! (?:to|on) (?:the )?left)",
             re.I,
         ),
     ),
@@ -302,6 +306,11 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
             r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b"
             # passing by way of the other direction's lane: "passed V1 by driving in the oncoming traffic lane"
+            # travelling in them: "was traveling in the opposing lane", "drove partially in the oncoming lane"
+            r"|\b(?:travel\w*|driv\w*|drove|proceed\w*|head\w*|going|was|were)(?: \w+ly)? (?:partially |fully )?"
+            r"(?:in|within) (?:the |an? )?"
+            + _OPPOSING_LANE
+            +
             # (or around it that way: "went around the stopped car through the oncoming lane")
             r"|\b(?:pass\w*|overt\w*|around)\b[^.;]{0,40}?\b(?:in|into|using|through|via|by way of) (?:the |an )?"
             + _OPPOSING_LANE,

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import re
 
-from sovarc.compiler.frontend.action_words import BESIDE_LANE, LANE_LINE
+from sovarc.compiler.frontend.action_words import BESIDE_LANE, LANE_LINE, MERGE_FROM
 from sovarc.dsl.ir import Action, ActionKind, Side
 
 _NAMED = re.compile(
@@ -25,8 +25,9 @@ _NAMED = re.compile(
     + BESIDE_LANE
     + r"|\benter\w*(?: (?:partially|fully))? "
     + BESIDE_LANE
-    + r"|\bcross\w* (?:over )?"
-    + LANE_LINE,
+    + r"|\b(?:cross\w* (?:over )?|across |over )"
+    + LANE_LINE
+    + MERGE_FROM,
     re.I,
 )
 

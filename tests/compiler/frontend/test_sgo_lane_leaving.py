@@ -56,6 +56,7 @@ def _any(move: str) -> str:
         "drifted into the Waymo AV",
         "swerved into the side of the Waymo AV",
         "intruded into the Waymo AV's lane",
+        "veered across the lane line",
     ],
 )
 def test_a_move_into_the_lane_beside_is_a_lane_change_toward_the_side_met(move: str) -> None:
@@ -86,6 +87,8 @@ def test_a_lane_named_before_the_verb_gives_no_side() -> None:
         "was heading south in the northbound lanes",
         "went around a stopped truck through the oncoming lane",
         "overtook a stopped truck by way of the opposing lane",
+        "was traveling in the opposing lane",
+        "drove partially in the oncoming lane",
     ],
 )
 def test_going_into_the_other_directions_lanes_is_retrograde(move: str) -> None:
@@ -94,7 +97,11 @@ def test_going_into_the_other_directions_lanes_is_retrograde(move: str) -> None:
 
 @pytest.mark.parametrize(
     "move",
-    ["was driving against traffic", "drove wrong-way down Pine Avenue", "was traveling northbound in a southbound lane"],
+    [
+        "was driving against traffic",
+        "drove wrong-way down Pine Avenue",
+        "was traveling northbound in a southbound lane",
+    ],
 )
 def test_driving_the_wrong_way_is_retrograde_whatever_the_heading_read(move: str) -> None:
     assert kinds(by_id(read(_any(move)), "V2"))[-1] is ActionKind.RETROGRADE
@@ -157,3 +164,20 @@ def test_a_lane_change_meant_is_not_made_and_one_attempted_is() -> None:
     assert kinds(tried)[-1] is ActionKind.CHANGE_LANE
     meant = by_id(read(_beside("slowed, preparing to change lanes,")), "V2")
     assert ActionKind.CHANGE_LANE not in kinds(meant)
+
+
+@pytest.mark.parametrize(
+    ("introduced", "move"),
+    [
+        ("A merging SUV", ActionKind.CHANGE_LANE),
+        ("A lane-changing SUV", ActionKind.CHANGE_LANE),
+        ("A wrong-way SUV", ActionKind.RETROGRADE),
+        ("An SUV entering Pine Avenue from the on-ramp", ActionKind.CHANGE_LANE),
+    ],
+)
+def test_the_words_that_introduce_a_road_user_say_it_left_its_lane(introduced: str, move: ActionKind) -> None:
+    s = read(
+        _HEAD.replace("a sedan", "an SUV") + "The Waymo AV was traveling north on Pine Avenue in the right lane. "
+        f"{introduced} made contact with the left side of the Waymo AV."
+    )
+    assert kinds(by_id(s, "V2"))[-1] is move
