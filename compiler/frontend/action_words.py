@@ -22,6 +22,29 @@ TURN_WORDS = (
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
     r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
 )
+# The line between the two directions, however it is named: "the double yellow line", "the solid double-yellow
+# lines", "the yellow center line", "the centerline", "the centre divider", "the center lane line".
+CENTRE_LINE = (
+    r"(?:(?:solid|painted|two|twin) )*(?:double[- ]?yellow(?: (?:cent(?:er|re) )?(?:lines?|stripes?|markings?))?"
+    r"|yellow (?:cent(?:er|re) )?(?:lines?|stripes?|markings?)|cent(?:er|re)[- ]?(?:lane )?(?:line|divider|stripe)s?)"
+)
+# A lane of its own direction beside the one it was in, named by where it lies ("the adjacent lane", "the next
+# lane", "the right adjacent lane", "the neighboring lane"): going into it is a lane change, whichever side.
+BESIDE_LANE = (
+    r"(?:the |an? |its )?(?:(?:left|right)(?:most)?[- ](?:hand )?)?(?:adjacent|next|neighbou?ring|other|parallel)"
+    r"(?: (?:travel|through|traffic))? lanes?\b"
+)
+# A lane line within one direction (not the centre line, nor the edge or fog line at the shoulder): crossing it
+# is going into the next lane of its own direction.
+LANE_LINE = (
+    r"(?:the |a )?(?:(?:single|double|solid|dashed|broken|skip|painted) )*(?:lane (?:line|divider|marking|stripe)s?"
+    r"|(?:white (?:lane )?|dashed |broken |skip )(?:line|stripe)s?)\b"
+)
+# A lane of the other direction, from the vehicle's point of view: "the oncoming lane", "the opposing lane of
+# travel", "the opposite traffic lanes".
+_OPPOSING_LANE = r"(?:oncoming|opposing|opposite)(?: direction| traffic| travel)? (?:travel )?lanes?\b"
+# Where a merge into a road's lanes comes from: "from the on-ramp", "from an acceleration lane".
+MERGE_FROM = r"|\bfrom (?:the |an? )?(?:[\w-]+ )?(?:on-?ramp|entrance ramp|acceleration lane|merge lane)\b"
 # The move under way at the impact after a turn or a lane change: closing on another from behind is driving on
 # in that one's lane, behind it, so the turn or lane change was over ("turned onto Elm Street and approached V1
 # from behind"). Passing is not: a pass is often the lane change or the turn itself ("changed lanes passing V1
@@ -63,7 +86,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:chang|switch)(?:es?|ed|ing)? lanes?\b|\blane[- ]chang(?:es?|ing)\b|\bmerg(?:es?|ed|ing)\b", re.I
+            # ("shifted lanes", "swapped lanes"; "lane changed" as a verb, but not "the left lane changing lanes")
+            r"\b(?:chang|switch|shift|swap)(?:es?|ed|ing|ped|ping|s)? lanes?\b"
+            r"|\blane[- ]chang(?:es?|ed|ing)\b(?! lanes?\b)"
+            r"|\bmerg(?:es?|ed|ing)\b"
+            # cutting in is moving into a lane just ahead of one in it: "cut in front of V1", "cut in ahead of it"
+            r"|\bcut(?:s|ting)? (?:back )?in\b(?!to\b)" + MERGE_FROM,
+            # coming onto a road from its on-ramp is merging into its lanes: "entering the freeway from the on-ramp"
+            re.I,
         ),
     ),
     (  # "changed from the left lane into the right lane", "moved right toward the exit lane"
@@ -73,6 +103,27 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b"
             r"|\b(?:mov|merg|swerv|steer|veer|drift)\w* (?:over )?(?:to the )?(?:left|right) (?:in)?to(?:ward)? "
             r"(?:the|an?) (?:\w+ ){0,2}lane\b",
+            re.I,
+        ),
+    ),
+    # Into the lane beside it, said with any verb of going sideways or into a place: "crossed into the adjacent
+    # lane", "entered the left adjacent lane", "shifted into the next lane", "went into the adjacent lane". (A lane
+    # named only by its side may be where a turn or a driveway exit lands, "turned right and went into the right
+    # lane", "entered the rightmost lane": those stay with the verbs of a sideways move above.)
+    (
+        ActionKind.CHANGE_LANE,
+        re.compile(
+            r"\b(?:cross|shift|cut|transition|weav|encroach|intrud|nudg|mov|merg|swerv|veer|drift|slid|went|go|came|come"
+            r"|travel)\w*(?: (?:over|back|partially|fully|slightly|sideways|laterally))* (?:in)?to "
+            + BESIDE_LANE
+            + r"|\benter(?:ed|ing|s)?(?: (?:partially|fully))? "
+            + BESIDE_LANE
+            # into another's lane, however intruding: "encroached on V1's lane", "encroaching upon its lane"
+            + r"|\b(?:encroach|intrud)\w* (?:on|upon|in|into) (?:[VP]\d's|the|its) (?:travel )?lane\b"
+            # over a lane line of its own direction: "crossed the dashed lane line", "crossing over a solid white
+            # line", "veered across the lane line" (not the centre line, and not "the lane line on the left side", a
+            # coded departure to the left)
+            r"|\b(?:cross(?:ed|ing|es)? (?:over )?|across |over )" + LANE_LINE + r"(?! (?:to|on) (?:the )?left)",
             re.I,
         ),
     ),
@@ -92,14 +143,22 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.RETROGRADE,
         re.compile(
             # the line between the directions, however it is named: "the center lane line", "the centre divider"
-            r"\bcross(?:ed|ing)? (?:over )?(?:the )?(?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
-            r"|\bleft of cent(?:er|re)\b"
-            r"|\b(?:across|over) the (?:double yellow|cent(?:er|re)[- ]?(?:lane )?(?:line|divider))"
-            r"|\binto the (?:opposing|oncoming) (?:lanes?|traffic)|\bwrong (?:way|side|direction)\b"
+            r"\bcross(?:ed|ing|es)? (?:over )?(?:the |a )?" + CENTRE_LINE + r"|\bleft of cent(?:er|re)\b"
+            r"|\b(?:across|over|straddl\w*) the "
+            + CENTRE_LINE
+            + r"|\binto (?:the )?(?:opposing|oncoming|opposite)(?: direction| traffic| travel)? (?:lanes?|traffic)"
+            r"|\bwrong[- ](?:way|side|direction)\b"
+            # against the direction the traffic there goes: "drove against traffic", "against the flow of traffic"
+            r"|\bagainst (?:the )?(?:flow of |oncoming |opposing )?traffic\b"
             r"|\bover the left (?:side )?(?:double yellow|lane line|cent(?:er|re))"
             r"|\bover the lane line on (?:the )?left side|\blane departure to the left"
             r"|\bcross(?:ed|ing) (?:over )?(?:the )?(?:\w+ )?lane lines? (?:to|on) the left"
-            r"|\bcrossed over\b(?! the (?:curb|median))",
+            # (not over a lane line or into a lane of its own direction: "crossed over into the right lane")
+            r"|\bcrossed over\b(?! the (?:curb|median)| "
+            + LANE_LINE
+            + r"| (?:in)?to (?:"
+            + BESIDE_LANE
+            + r"|(?:the |an? )?(?:[\w-]+ )?(?:left|right)(?:most)?(?: (?:adjacent|turn|travel|through))? lane\b))",
             re.I,
         ),
     ),
@@ -133,7 +192,15 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bran off the road|\bdeparted the road|\bleft the road|\bonto the shoulder"
             r"|\bover the right (?:lane |edge |fog )?line"
-            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road",
+            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road"
+            # off the road's surface, said with any verb of going: "veered off the roadway", "went off the road"
+            r"|\b(?:went|ran|drove|drifted|veered|swerved|careened|skidded|slid|travell?ed|rolled) off (?:of )?the "
+            r"(?:road(?:way)?|street|pavement)\b"
+            # up over the kerb: "mounted the curb", "jumped the curb", "drove onto the sidewalk"
+            r"|\b(?:mount|jump|hopp|climb)\w* (?:up )?(?:onto |over )?the (?:curb|kerb)\b"
+            r"|\bup (?:onto|on) the (?:curb|kerb)\b"
+            r"|\b(?:went|ran|drove|drifted|veered|swerved|careened|skidded|slid|travell?ed|rolled) (?:up )?onto the "
+            r"(?:sidewalk|curb|kerb|median|grass)\b",
             re.I,
         ),
     ),
@@ -186,7 +253,17 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.CHANGE_LANE,
         re.compile(
-            r"\b(?:veer|swerv|drift)\w* (?:\w+ )?out of (?:its|their|his|her|the) (?:own |travel )?lane\b", re.I
+            r"\b(?:veer|swerv|drift|mov|came|went|slid|shift)\w* (?:\w+ )?out of (?:its|their|his|her|the) "
+            r"(?:own |travel )?lane\b"
+            r"|\b(?:left|depart(?:ed|ing|s)?|exit(?:ed|ing|s)?|leav(?:es|ing)) (?:its|their|his|her) "
+            r"(?:own |travel )?lane\b"
+            # across two lanes at once: "was straddling two lanes", "straddled the lane line"
+            r"|\bstraddl\w* (?:the |two |both |multiple )*(?:travel )?lanes\b|\bstraddl\w* "
+            + LANE_LINE
+            # sideways into another road user: "veered toward V1", "drifted into V1", "swerved into the side of V1"
+            + r"|\b(?:veer|swerv|drift|nudg|shift|slid)\w*(?: over| back| slightly)? (?:toward|towards|into) "
+            r"(?:the (?:side of |left side of |right side of )?)?[VP]\d\b",
+            re.I,
         ),
     ),
     # Into the lane another road user is in, or the one between: a lane change, its side said by the lane left
@@ -213,6 +290,9 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ActionKind.CHANGE_LANE,
         re.compile(
             r"\b(?:maneuver|manoeuvr|steer|swerv|mov|go|went|veer|drove|driv|pull|cut)\w* (?:\w+ )?around\b"
+            # (not by way of the other direction's lanes: "went around V1 through the oncoming lane" is one move
+            # there, read below)
+            r"(?![^.,;]{0,40}?\b(?:using|through|via|by way of|in|into) (?:the |an? )?" + _OPPOSING_LANE + ")"
             # or toward its side from behind it: "began to accelerate toward the right side of V1"
             r"|\b(?:accelerat|steer|swerv|mov|veer|pull|drove|driv|head)\w* (?:\w+ )?towards? the (?:left|right) side "
             r"of [VP]\d\b",
@@ -226,8 +306,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"\b(?:enter\w*|mov\w*|cross\w*|went|go\w*) (?:in)?to (?:the )?(?:opposing|oncoming) lanes?\b"
             r"|\benter(?:ed|ing|s)? (?:the )?(?:opposing|oncoming) (?:lanes?|traffic)\b"
             # passing by way of the other direction's lane: "passed V1 by driving in the oncoming traffic lane"
-            r"|\bpass\w*\b[^.;]{0,40}?\b(?:in|into|using|through|via) (?:the |an )?(?:oncoming|opposing|opposite)"
-            r"(?: traffic| travel)? lanes?\b",
+            # travelling in them: "was traveling in the opposing lane", "drove partially in the oncoming lane"
+            r"|\b(?:travel\w*|driv\w*|drove|proceed\w*|head\w*|going|was|were)(?: \w+ly)? (?:partially |fully )?"
+            r"(?:in|within) (?:the |an? )?"
+            + _OPPOSING_LANE
+            +
+            # (or around it that way: "went around the stopped car through the oncoming lane")
+            r"|\b(?:pass\w*|overt\w*|around)\b[^.;]{0,40}?\b(?:in|into|using|through|via|by way of) (?:the |an )?"
+            + _OPPOSING_LANE,
             re.I,
         ),
     ),

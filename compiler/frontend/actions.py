@@ -21,7 +21,7 @@ from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.retold import under_way_at_impact
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
-from sovarc.compiler.frontend.turnpath import crossed_in_turn
+from sovarc.compiler.frontend.turnpath import crossed_in_turn, turned_into
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
 
@@ -52,7 +52,18 @@ _ENTERED_ROAD = re.compile(r"\benter(?:ed|ing|s) the (?:road(?:way)?|street|high
 _INTO_LANES = re.compile(
     r"\b(?:veer|swerv|cross|drift|went|go|travel|encroach|mov|steer|skid)\w*\b[^.,;]{0,40}?\b(?:in)?to the "
     r"(north|south|east|west)bound (?:travel )?lanes?"
-    r"|\benter(?:ed|ing|s) the (north|south|east|west)bound (?:travel )?lane",
+    r"|\benter(?:ed|ing|s) the (north|south|east|west)bound (?:travel )?lane"
+    # or travelling in them: "was heading south in the northbound lanes", "in a northbound-only section"
+    r"|\b(?:travel\w*|driv\w*|drove|head\w*|going|proceed\w*)\b[^.,;]{0,40}?\b(?:in|on|along|down) (?:the|a|an) "
+    r"(north|south|east|west)bound(?:[- ]only)? (?:travel )?(?:lanes?|side|section|portion|roadway)\b",
+    re.I,
+)
+# A vehicle's travel said against the lanes it is in, in one clause: "traveling eastbound in a westbound-only
+# section", "heading north in the southbound lanes" (whatever heading was read for it elsewhere)
+_AGAINST_LANES = re.compile(
+    r"\b(?:travel\w*|driv\w*|drove|head\w*|going|proceed\w*|mov\w*) (?:\w+ )?(north|south|east|west)(?:bound|ward)?\b"
+    r"[^.,;]{0,30}?\b(?:in|on|along|down) (?:the|a|an) "
+    r"(north|south|east|west)bound(?:[- ]only)? (?:travel )?(?:lanes?|side|section|portion|roadway)\b",
     re.I,
 )
 # What a driver meant to do: the lead word stays (a vehicle "waiting" stopped), what it meant to do goes.
@@ -204,7 +215,17 @@ def _found(
                     to = Side(side) if side else None
                 if act is ActionKind.GO_ACROSS and not at_junction:
                     continue
-                if act is ActionKind.RETROGRADE and crossed_in_turn(piece, m.group()):
+                if act in (ActionKind.RETROGRADE, ActionKind.CHANGE_LANE) and crossed_in_turn(piece, m.group()):
+                    continue
+                if act is ActionKind.RETROGRADE and "wrong" not in m.group().lower() and turned_into(done, m.start()):
+                    continue
+                # a lane entered right after coming onto the road from off it is where it entered, not a change
+                # ("exited a driveway ... entered the rightmost lane")
+                if (
+                    act is ActionKind.CHANGE_LANE
+                    and not names_a_lane_change(m.group())
+                    and any(a.kind is ActionKind.DRIVE_INTO for _, a in found)
+                ):
                     continue
                 # "turning left after being stopped": what the after-clause says came first
                 at = piece.at - 1 if any(a <= m.start() < b for a, b in earlier) else piece.at + m.start()
@@ -225,8 +246,14 @@ def _found(
             found += [
                 (piece.at + m.start(), Action(ActionKind.RETROGRADE))
                 for m in _INTO_LANES.finditer(what_was_done(piece.text))
-                if (m.group(1) or m.group(2)).lower() == opposite(heading).value
+                if next(g for g in m.groups() if g).lower() == opposite(heading).value
             ]
+    for piece in pieces:
+        found += [
+            (piece.at + m.start(), Action(ActionKind.RETROGRADE))
+            for m in _AGAINST_LANES.finditer(what_was_done(piece.text))
+            if opposite(Heading(m.group(1).lower())) == Heading(m.group(2).lower())
+        ]
     if meant is not None:  # one meant to turn and drove into the junction: that is its turn
         found = [(at, Action(meant) if a.kind is ActionKind.GO_ACROSS else a) for at, a in found]
     return found
@@ -313,6 +340,13 @@ def read_actions_at(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
+    # Driving in the other direction's lanes goes on through a junction: going across it after is the same travel,
+    # still on the wrong side ("traveling eastbound in a westbound-only section ... entered the intersection")
+    found = [
+        (at, a)
+        for i, (at, a) in enumerate(found)
+        if a.kind is not ActionKind.GO_ACROSS or i == 0 or found[i - 1][1].kind is not ActionKind.RETROGRADE
+    ]
     # Driving on is said only of a vehicle that moved off again after a stop (see PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see DRIVING_ON).

@@ -44,8 +44,10 @@ _OTHER = re.compile(
     r"|(?<!\bwas )(?<!\bis )(?<!\bas )\b(?:an?|another)\s+(?:[a-z][a-z-]*\s+){0,2}?(?:vehicles?|cars?|trucks?|vans?|"
     r"suvs?|sedans?|pickups?|motorists?|buses)\b(?! (?:involved|[VP]\d))"
     r"|\bthe vehicles? (?:traveling |travelling )?(?:directly )?(?:in front|ahead)\b"
-    # (not the flow a vehicle joins: "attempting to enter traffic", "merged into the flow of traffic")
-    r"|\b(?<!enter )(?<!entered )(?<!entering )(?<!enters )(?<!flow of )(?<!into )(?:vehicles|traffic)\b"
+    # (not the flow a vehicle joins: "attempting to enter traffic", "merged into the flow of traffic"; nor the
+    # one it goes against or into on the wrong side: "drove against traffic", "veered into oncoming traffic")
+    r"|\b(?<!enter )(?<!entered )(?<!entering )(?<!enters )(?<!flow of )(?<!into )(?<!against )"
+    r"(?<!into oncoming )(?<!into opposing )(?<!against oncoming )(?:vehicles|traffic)\b"
     r"(?! (?:signal|light|control|device|lane|way|island|count|volume))",
     re.IGNORECASE,
 )

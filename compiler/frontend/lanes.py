@@ -65,7 +65,8 @@ def placed_lane(text: str, each_way: int | Unknown) -> int | Unknown:
 # that lane only by whose it is ("into V1's lane", "into the center lane"), it goes away from the side of the
 # lane it left: a vehicle in the lane to the left of another, or in the leftmost lane, can only move right.
 _SIDE = r"(left|right)(?:most|[- ]hand)?"
-_BEFORE = re.compile(r"\b" + _SIDE + r"[- ]$", re.I)  # "a right lane change", "a left-hand lane change"
+# "a right lane change", "a left-hand lane change" (not a lane named before the verb: "the left lane changed to")
+_BEFORE = re.compile(r"(?<!\bthe )\b" + _SIDE + r"[- ]$", re.I)
 _TARGETS = (
     # "into the left turn lane", "to the expanded leftmost lane", "toward the right"
     re.compile(

@@ -6,17 +6,30 @@ A report that gives the side anywhere ("changed lanes ... its lane change to the
 the side-less mention is then that move, not another.
 
 Only words that name a lane change say one without its side ("changed lanes", "switching lanes", "a lane change",
-"merging"). A move around another road user, or out of its lane, with no side said may be made within the lane (a
-motorcycle splitting lanes), onto the shoulder or into the other direction's lanes: those stay unread.
+"merging", "cut in front of", "shifted lanes"), or name the lane entered as one of its own direction beside it
+("into the adjacent lane", "crossed the dashed lane line"). A move around another road user, or out of its lane,
+with no side said may be made within the lane (a motorcycle splitting lanes), onto the shoulder or into the other
+direction's lanes: those stay unread.
 """
 
 from __future__ import annotations
 
 import re
 
+from sovarc.compiler.frontend.action_words import BESIDE_LANE, LANE_LINE, MERGE_FROM
 from sovarc.dsl.ir import Action, ActionKind, Side
 
-_NAMED = re.compile(r"\b(?:chang|switch)\w* lanes?\b|\blane[- ]chang|\bmerg(?:es?|ed|ing)\b", re.I)
+_NAMED = re.compile(
+    r"\b(?:chang|switch|shift|swap)\w* lanes?\b|\blane[- ]chang|\bmerg(?:es?|ed|ing)\b|\bcut(?:s|ting)? (?:back )?in\b"
+    r"|\b(?:in)?to "
+    + BESIDE_LANE
+    + r"|\benter\w*(?: (?:partially|fully))? "
+    + BESIDE_LANE
+    + r"|\b(?:cross\w* (?:over )?|across |over )"
+    + LANE_LINE
+    + MERGE_FROM,
+    re.I,
+)
 
 
 def names_a_lane_change(words: str) -> bool:

@@ -115,12 +115,21 @@ _MOVING = re.compile(
 )
 
 
+# Words that introduce a road user leaving its lane: "a merging SUV", "a lane-changing van" (a lane change whose side
+# lowering chooses), "a wrong-way sedan" (driving in the other direction's lanes).
+_LEAVING = (
+    (re.compile(r"\b(?:merging|lane[- ]chang(?:ing|er)|lane[- ]switching)\b", re.I), ActionKind.CHANGE_LANE),
+    (re.compile(r"\bwrong[- ]way\b", re.I), ActionKind.RETROGRADE),
+)
+
+
 def introduced_doing(
     people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
 ) -> list[Participant]:
     """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
     passenger vehicle") or moving ("an approaching van", "the trailing bus"): the words that introduce a road
-    user state what it was doing, so it stood parked, or drove along its lane. `words` are the words each party
+    user state what it was doing, so it stood parked, or drove along its lane, or drove along and left it ("a
+    merging SUV", "a wrong-way sedan"). `words` are the words each party
     numbered by rule was first named by (see `names.parties`)."""
     out = []
     for p in people:
@@ -129,6 +138,10 @@ def introduced_doing(
             out.append(p)
             continue
         said = words.get(p.id, "")
+        if leaving := next((k for pattern, k in _LEAVING if pattern.search(said)), None):
+            spots.append((f"{p.id}.actions[2]", "named", *first.span()))
+            out.append(replace(p, actions=(Action(ActionKind.FOLLOW_LANE), Action(leaving))))
+            continue
         kind = (
             ActionKind.PARKED
             if re.search(r"\bparked\b", said, re.I)
