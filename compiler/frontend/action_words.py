@@ -17,7 +17,9 @@ TURN_WORDS = (
     # (not a turn approached: "approached a right turn onto Oak Street" names the turn ahead, not yet begun)
     r"|(?<!approached a )(?<!approaching a )(?<!approaches a )"
     r"\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
-    r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
+    # "made a left", and the idioms that say the same: "took a right", "hung a left onto Elm Street"
+    r"|\b(?:make|makes|made|making|take|takes|took|taken|taking|hang|hangs|hung|hanging) a {0}\b"
+    r"(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
     r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
@@ -57,7 +59,13 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
-    (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
+    # (a turn about made in parts, "a three-point turn", "a K-turn", is a U-turn too)
+    (
+        ActionKind.U_TURN,
+        re.compile(
+            r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b|\b(?:three|3|multi|multiple)[- ]point turn\b|\bk-turn\b", re.I
+        ),
+    ),
     (ActionKind.TURN_LEFT, re.compile(TURN_WORDS.format("left"), re.I)),
     (ActionKind.TURN_RIGHT, re.compile(TURN_WORDS.format("right"), re.I)),
     (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
@@ -106,7 +114,7 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.DRIVE_INTO,
         re.compile(
-            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
+            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private |[\w-]+ (?=parking))?"
             r"(?:drive(?:way)?|parking|lot|parked)"
             r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|emerg(?:ed|ing|es) from|pull(?:ed|ing)? out of"
             r"|proceed(?:ed|ing)? out of"
@@ -123,7 +131,10 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
             # "departing a parking space", "pulled out of the parked position"
             r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
-            r"(?:curb(?:side)?|kerb|parking (?:space|spot|stall|position)|parked position)\b"
+            r"(?:curb(?:side)?|kerb|(?:[\w-]+ )?parking (?:space|spot|stall|position)|parked position)\b"
+            # into the traffic it joined from the kerb or the shoulder: "merged into traffic from the curb"
+            r"|\b(?:pull|merg|mov|accelerat|drove|driv|came|start)\w*\b[^.,;]{0,30}?\bfrom (?:the|a) "
+            r"(?:curb(?:side)?|kerb|shoulder|(?:[\w-]+ )?parking (?:space|spot|stall))\b"
             r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
             re.I,
         ),
@@ -133,7 +144,10 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         re.compile(
             r"\bran off the road|\bdeparted the road|\bleft the road|\bonto the shoulder"
             r"|\bover the right (?:lane |edge |fog )?line"
-            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road",
+            r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road"
+            # off the road into a place to stand: "pulled into a parking space", "was pulling into a driveway"
+            r"|\bpull(?:ed|ing|s)? (?:forward )?(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,2}?"
+            r"(?:parking (?:space|spot|stall|lot|garage)|driveway|space|spot|stall)\b",
             re.I,
         ),
     ),
@@ -160,6 +174,23 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
             r"|\bto a (?:complete |full |sudden |quick |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
             r"|\bidling\b"
+            # pulled over to the kerb is standing there: "was pulled over for a pick-up", "pulled over at the curb"
+            r"|\b(?:was|were|is|remained) pulled over\b"
+            r"|\bpull(?:ed|ing|s)? over (?:\w+ )?(?:at|to|against|along|near|beside|by|onto) (?:the|a) "
+            r"(?:[\w-]+ )?(?:curb|kerb|side|shoulder)\b"
+            # standing in a line of traffic or still, however said: "was queued behind traffic", "stood still",
+            # "was at rest", "held its position at the stop line"
+            r"|\b(?:was|were|sat|remained|stood|stayed) (?:\w+ )?queued\b|\b(?:standing|stood|remained|sat) still\b"
+            # (not "came to rest": where a vehicle ended after the crash)
+            r"|\b(?:was|were|remained|sat) at rest\b"
+            # "was at a complete stop", "was motionless", "paused at the stop sign", "was standing at the light",
+            # "sat at the red light", "was not moving" (a state, kept from the negations: see actions._NEGATED)
+            r"|\b(?:was|were|remained|sat) at a (?:complete |full |dead )?stop\b|\bmotionless\b|\bpaus(?:ed|ing)\b"
+            # (not "was in the left lane": where it was, moving or not)
+            r"|\b(?:stood|standing|sat|sitting) (?:at|in|behind) (?:the|a) (?:[\w-]+ ){0,2}"
+            r"(?:light|signal|lane|intersection|traffic|sign|line|crosswalk|queue)\b"
+            r"|\bnot (?:moving|in motion)\b"
+            r"|\b(?:held|holding|hold|maintained|maintaining) (?:its|their|his|her) (?:stopped )?position\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),

@@ -21,6 +21,7 @@ from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.retold import under_way_at_impact
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
+from sovarc.compiler.frontend.turned import driven_on
 from sovarc.compiler.frontend.turnpath import crossed_in_turn
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
@@ -68,8 +69,12 @@ _INTENT = re.compile(
     r"|prepar(?:ing|ed|es)|waiting|waited|await(?:ing|ed|s)?|in order|so as|prior"
     r"|(?:an? )?(?:opportunity|chance|opening|gap)"
     # "in anticipation of turning right", "in preparation for a left turn": what it was getting ready to do
-    r"|in (?:anticipation|preparation|advance))"
-    r"(?P<what> (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
+    r"|in (?:anticipation|preparation|advance)"
+    # in place for a move not begun: "queued to turn left", "lined up to make a right", "positioned to turn"
+    r"|queued|lined up|positioned|(?:getting )?ready|poised)"
+    # (with where it waited said first: "waiting at the red light to make a right turn")
+    r"(?P<what>(?: (?:at|in|behind) (?:the|a|an) (?:[\w-]+ ){0,3}?(?:light|signal|sign|line|lane|intersection))?"
+    r" (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
 # A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
@@ -101,11 +106,22 @@ _QUALIFIED = re.compile(
     r"| (?:[\w-]+ )?(?:vehicles?|cars?|traffic|trucks?|bus(?:es)?|vans?|suvs?|sedans?|pickups?)\b)",
     re.I,
 )
-_INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
+# A move meant or signalled is not made: "its intended left turn", "signaled a left turn", "indicated a right turn".
+_INTENDED_MOVE = re.compile(
+    r"\b(?:intended|signal(?:l)?(?:ed|ing|s)?(?: for)?|indicat(?:ed|ing|es)) (?:\w+ ){0,2}"
+    r"(?:turn|u-turn|lane change)\b",
+    re.I,
+)
+# What is awaited is not yet done, and "await" takes it as its object: "awaiting a green arrow for a left turn".
+_A_MOVE = re.compile(r"\b(?:turn|u-turn|lane change|merge|pull|pass|overtake|reverse|back up)", re.I)
+_AWAITED = re.compile(r"\b(?P<lead>await(?:ing|ed|s)?)(?P<what> (?!(?:to|on|for|of)\b)[^.,;]*?" + _CLAUSE + ")", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
 # "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
+# (not "was not moving": standing, a state said by denying motion)
 _NEGATED = re.compile(
-    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I
+    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?! (?:moving|in motion)\b)(?: yet| even)?"
+    r"[^.,;]*?" + _CLAUSE,
+    re.I,
 )
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
@@ -154,6 +170,10 @@ def what_was_done(text: str) -> str:
     text = LANE_USE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
+    # (blanked, not cut, so that what is read after it keeps its place; only when a move is awaited)
+    text = _AWAITED.sub(
+        lambda m: m.group("lead") + " " * len(m.group("what")) if _A_MOVE.search(m.group("what")) else m.group(0), text
+    )
     return _INTENT.sub(intent, text)
 
 
@@ -313,6 +333,9 @@ def read_actions_at(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
+    turned = driven_on(found, pieces)  # a turn, then along the road turned onto (see turned.py)
+    after_turn = {at for at, _ in turned[len(found) :]}
+    found = turned
     # Driving on is said only of a vehicle that moved off again after a stop (see PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see DRIVING_ON).
@@ -327,6 +350,7 @@ def read_actions_at(
             and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
         )
         or (i > 0 and i + 1 == len(found) and found[i - 1][1].kind in _MANOEUVRES and at in on)
+        or at in after_turn
     ]
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well

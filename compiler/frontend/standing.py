@@ -115,27 +115,42 @@ _MOVING = re.compile(
 )
 
 
+# What the words that introduce a road user say it was doing, first match first: a participle used as an adjective
+# ("a reversing SUV", "a left-turning car", "a stopped van", "an approaching bus") or put after the name.
+_INTRODUCED: tuple[tuple[ActionKind, re.Pattern[str]], ...] = (
+    (ActionKind.REVERSE, re.compile(r"\b(?:reversing|backing)\b", re.I)),
+    (ActionKind.U_TURN, re.compile(r"\bu-?turning\b", re.I)),
+    (ActionKind.TURN_LEFT, re.compile(r"\bleft[- ]turning\b|\bturning left\b", re.I)),
+    (ActionKind.TURN_RIGHT, re.compile(r"\bright[- ]turning\b|\bturning right\b", re.I)),
+    (ActionKind.PARKED, re.compile(r"\bparked\b", re.I)),
+    (ActionKind.STOP, re.compile(r"\b(?:stationary|stopped|standing|idling|queued)\b", re.I)),
+    (ActionKind.FOLLOW_LANE, _MOVING),
+)
+
+
 def introduced_doing(
     people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
 ) -> list[Participant]:
     """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
-    passenger vehicle") or moving ("an approaching van", "the trailing bus"): the words that introduce a road
-    user state what it was doing, so it stood parked, or drove along its lane. `words` are the words each party
-    numbered by rule was first named by (see `names.parties`)."""
+    passenger vehicle"), standing ("a stationary SUV"), turning ("a left-turning van"), reversing ("a reversing
+    pickup") or moving ("an approaching van", "the trailing bus"): the words that introduce a road user state
+    what it was doing (see `_INTRODUCED`). `words` are the words each party numbered by rule was first named by
+    (see `names.parties`)."""
     out = []
     for p in people:
         first = re.search(rf"\b{p.id}\b", named)
         if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
             out.append(p)
             continue
-        said = words.get(p.id, "")
-        kind = (
-            ActionKind.PARKED
-            if re.search(r"\bparked\b", said, re.I)
-            else ActionKind.FOLLOW_LANE
-            if _MOVING.search(said)
-            else None
+        # the words before its name, and a state put after it ("V2 parked along the curb", "V2, which was turning
+        # left,"; not "V2 stopped", a verb as much as a state)
+        after = re.findall(
+            rf"\b{p.id}(?:,? (?:that|which) (?:was|were|had been) (\w+(?:[- ]\w+)?)"
+            r"| (parked|stationary|standing|idling|queued)\b)",
+            named,
         )
+        said = " ".join([words.get(p.id, ""), *(w for pair in after for w in pair)])
+        kind = next((k for k, pattern in _INTRODUCED if pattern.search(said)), None)
         if kind is None:
             out.append(p)
             continue
