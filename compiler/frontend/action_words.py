@@ -67,6 +67,16 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
         ),
     ),
     (ActionKind.TURN_LEFT, re.compile(TURN_WORDS.format("left"), re.I)),
+    # A turn across another's path or across the oncoming lanes: where traffic keeps right, only a left turn
+    # crosses them ("turned across the path of V1", "turning across oncoming traffic")
+    (
+        ActionKind.TURN_LEFT,
+        re.compile(
+            r"\bturn(?:ed|ing|s)? (?:\w+ )?across (?:the |its |[VP]\d's )(?:\w+ )?path\b"
+            r"|\bturn(?:ed|ing|s)? (?:\w+ )?across (?:the )?(?:oncoming|opposing) (?:traffic|lanes?)\b",
+            re.I,
+        ),
+    ),
     (ActionKind.TURN_RIGHT, re.compile(TURN_WORDS.format("right"), re.I)),
     (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
         ActionKind.CHANGE_LANE,
@@ -122,6 +132,8 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
+            r"|\bpull(?:ed|ing|s)? (?:out )?(?:in)?to (?:the )?(?:flow of )?traffic\b"
+            r"|\bpull(?:ed|ing|s)? (?:out )?(?:in)?to (?:the|a) (?:travel|traffic) lane\b"
             r"|\bfrom (?:a|the) (?:private )?(?:drive(?:way)?|parking (?:lot|garage|structure))\b"
             # into the flow of traffic, or onto the road itself, from wherever it stood off it: "attempting to
             # enter traffic", "maneuvered into the roadway" (not "into the intersection": that is crossing)
@@ -147,7 +159,11 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\b(?:went|ran|drove|drifted|veered|travell?ed|departed) off the right side of the road"
             # off the road into a place to stand: "pulled into a parking space", "was pulling into a driveway"
             r"|\bpull(?:ed|ing|s)? (?:forward )?(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,2}?"
-            r"(?:parking (?:space|spot|stall|lot|garage)|driveway|space|spot|stall)\b",
+            r"(?:parking (?:space|spot|stall|lot|garage)|driveway|space|spot|stall)\b"
+            # parking, said as under way: "was parallel parking", "attempting to park" (into a space: off the road)
+            r"|\b(?:was|were|is|while|began|started) (?:parallel[- ])?parking\b"
+            r"(?! (?:lots?|spaces?|spots?|stalls?|garages?|lanes?|structures?|areas?|brakes?|enforcement)\b)"
+            r"|\battempt(?:ed|ing|s)? to (?:parallel[- ])?park\b",
             re.I,
         ),
     ),
@@ -208,6 +224,9 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bpass(?:ed|es)\b|\bovert(?:ook|akes)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
+            # "pulled out" with nowhere said: moving off from where it stood (not "pulled out to pass", "pulled out
+            # from behind V1": a move sideways)
+            r"|\bpull(?:ed|s|ing)? out\b(?! (?:of|onto|into|to|from|around|and pass|in front)\b)"
             # closing on another from behind (see DRIVING_ON)
             r"|" + DRIVING_ON.pattern,
             re.I,

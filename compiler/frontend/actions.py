@@ -16,6 +16,7 @@ import re
 
 from sovarc.compiler.frontend.action_words import DRIVING_ON, PATTERNS
 from sovarc.compiler.frontend.clauses import Piece
+from sovarc.compiler.frontend.compass_turns import compass_turns
 from sovarc.compiler.frontend.lanes import LANE_USE, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.retold import under_way_at_impact
@@ -238,6 +239,7 @@ def _found(
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
+        found += [(piece.at + at, turn) for at, turn in compass_turns(done, heading)]  # "turned onto eastbound X"
         said += done + " "
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
     if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
@@ -333,6 +335,13 @@ def read_actions_at(
     if turning or ActionKind.DRIVE_INTO in kinds:  # a turning vehicle does not go across
         found = [(at, a) for at, a in found if a.kind is not ActionKind.GO_ACROSS]
     found = under_way_at_impact(resumed(sorted(found, key=lambda item: item[0]), pieces), pieces)
+    # One parked that moves off ("began to pull out", "pulled out") enters the road from where it stood.
+    found = [
+        (at, Action(ActionKind.DRIVE_INTO))
+        if a.kind is ActionKind.FOLLOW_LANE and i > 0 and found[i - 1][1].kind is ActionKind.PARKED
+        else (at, a)
+        for i, (at, a) in enumerate(found)
+    ]
     turned = driven_on(found, pieces)  # a turn, then along the road turned onto (see turned.py)
     after_turn = {at for at, _ in turned[len(found) :]}
     found = turned

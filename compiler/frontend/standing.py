@@ -36,6 +36,13 @@ def still_at_impact(sentence: str, pid: str) -> bool:
     )
 
 
+def stood_at_impact(sentence: str, pid: str) -> ActionKind | None:
+    """How the impact sentence says the participant stood, if it does (see `still_at_impact`): parked, or stopped."""
+    if not still_at_impact(sentence, pid):
+        return None
+    return ActionKind.PARKED if re.search(rf"\bparked {pid}\b|\b{pid} \w+ parked\b", sentence) else ActionKind.STOP
+
+
 def standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
     """A vehicle that stood still at the impact struck nobody: the striker is the one that moved into it,
     whichever of its parts the sentence names first (the crash readers take a named front for the striking

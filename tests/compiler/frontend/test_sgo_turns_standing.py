@@ -158,3 +158,68 @@ def test_a_turn_under_way_at_the_impact_is_the_turn(told: str) -> None:
 def test_reversing_said_any_way_is_the_reverse() -> None:
     for move in ("a sedan shifted into reverse.", "a sedan was traveling backward.", "a sedan backed away from it."):
         assert partner(move, REAR_HIT) is _K.REVERSE
+
+
+@pytest.mark.parametrize(
+    "move",
+    [
+        "a sedan parked at the curb began to pull out.",
+        "a sedan, parked along the east curb, pulled out.",
+        "a sedan pulled out into traffic.",
+    ],
+)
+def test_one_parked_that_moves_off_enters_the_road(move: str) -> None:
+    assert partner(move) is _K.DRIVE_INTO
+
+
+def test_one_pulling_out_to_pass_does_not_enter_the_road() -> None:
+    assert partner("a sedan behind it pulled out to pass.") is not _K.DRIVE_INTO
+
+
+@pytest.mark.parametrize("move", ["a sedan was parallel parking.", "a sedan was attempting to park."])
+def test_parking_under_way_is_a_move_into_a_space(move: str) -> None:
+    assert partner(move, REAR_HIT) is _K.DRIVE_OFF
+
+
+@pytest.mark.parametrize(
+    ("impact", "kind"),
+    [
+        ("A sedan struck the stationary Zoox robotaxi.", _K.STOP),
+        ("A sedan made contact with the parked Zoox robotaxi.", _K.PARKED),
+    ],
+)
+def test_standing_said_only_at_the_impact_is_what_it_was_doing(impact: str, kind: ActionKind) -> None:
+    assert robotaxi(impact) is kind
+
+
+@pytest.mark.parametrize(
+    ("move", "kind"),
+    [
+        ("a left-turning sedan entered the junction from Birch Road.", _K.TURN_LEFT),
+        ("the right-turning sedan cut the corner.", _K.TURN_RIGHT),
+        ("a reversing sedan came out from a loading dock.", _K.REVERSE),
+    ],
+)
+def test_a_move_said_before_the_noun_of_one_named_before_is_still_its_move(move: str, kind: ActionKind) -> None:
+    assert partner(move, REAR_HIT if kind is _K.REVERSE else FRONT_HIT) is kind
+
+
+@pytest.mark.parametrize(
+    ("move", "kind"),
+    [
+        # heading north: west is on its left, east on its right
+        ("a sedan heading north on Birch Road turned onto westbound Pine Avenue.", _K.TURN_LEFT),
+        ("a sedan heading north on Birch Road turned sharply east.", _K.TURN_RIGHT),
+        ("a sedan traveling east on Birch Road made a turn onto northbound Pine Avenue.", _K.TURN_LEFT),
+    ],
+)
+def test_a_turn_said_by_the_heading_it_led_to_is_the_turn_to_that_side(move: str, kind: ActionKind) -> None:
+    assert partner(move) is kind
+
+
+def test_a_turn_from_a_heading_says_no_side() -> None:
+    assert partner("a sedan heading north made a turn from westbound Birch Road.") not in (_K.TURN_LEFT, _K.TURN_RIGHT)
+
+
+def test_a_turn_across_the_path_of_another_is_a_left_turn() -> None:
+    assert partner("a sedan coming the other way turned across the path of the Zoox robotaxi.") is _K.TURN_LEFT
