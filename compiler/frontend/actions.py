@@ -114,6 +114,13 @@ _INTENDED_MOVE = re.compile(
     re.I,
 )
 # What is awaited is not yet done, and "await" takes it as its object: "awaiting a green arrow for a left turn".
+# A stop before a move ("stopped before entering the intersection", "came to a stop before making the turn") says
+# where it stopped: short of the move, not yet made (a move made after the stop is told again: "then entered").
+_STOPPED_BEFORE = re.compile(
+    r"\b(?P<lead>(?:stop(?:ped|s)?|halt(?:ed|s)?|to a (?:complete |full )?(?:stop|halt))(?: \w+){0,4}? before)"
+    r"(?P<what> \w+ing\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
 _A_MOVE = re.compile(r"\b(?:turn|u-turn|lane change|merge|pull|pass|overtake|reverse|back up)", re.I)
 _AWAITED = re.compile(r"\b(?P<lead>await(?:ing|ed|s)?)(?P<what> (?!(?:to|on|for|of)\b)[^.,;]*?" + _CLAUSE + ")", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
@@ -172,6 +179,7 @@ def what_was_done(text: str) -> str:
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
     # (blanked, not cut, so that what is read after it keeps its place; only when a move is awaited)
+    text = _STOPPED_BEFORE.sub(lambda m: m.group("lead") + " " * len(m.group("what")), text)
     text = _AWAITED.sub(
         lambda m: m.group("lead") + " " * len(m.group("what")) if _A_MOVE.search(m.group("what")) else m.group(0), text
     )
@@ -291,6 +299,30 @@ def _carried_out(
     return [*[(w, a) for w, a in found if a.kind is not ActionKind.GO_ACROSS], (at, Action(turn))]
 
 
+def _waited_turn(
+    found: list[tuple[int, Action]], pieces: list[Piece], road: RoadKind | Unknown
+) -> list[tuple[int, Action]]:
+    """At a junction, one that stopped waiting or preparing to turn ("waiting to turn right onto Elm Street") and
+    then moved off ("When the light turned green, V1 proceeded") made the turn it waited to make: moving off is
+    that turn, the last thing it did. Not while it stood ("remained stopped"), nor when another move follows."""
+    if road not in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION) or len(found) < 2:
+        return found
+    (_, before), (moved, last) = found[-2], found[-1]
+    if before.kind is not ActionKind.STOP or last.kind is not ActionKind.FOLLOW_LANE:
+        return found
+    waited = [
+        (p.at + i.start(), m.group(1).lower())
+        for p in pieces
+        for i in _INTENT.finditer(p.text)
+        if not _PLAN.match(i.group("lead"))
+        for m in _MEANT_TURN.finditer(i.group("what"))
+    ]
+    if len({side for _, side in waited}) != 1 or min(at for at, _ in waited) > moved:
+        return found
+    turn = ActionKind.TURN_LEFT if waited[0][1] == "left" else ActionKind.TURN_RIGHT
+    return [*found[:-1], (moved, Action(turn))]
+
+
 def read_actions(
     pieces: list[Piece],
     road: RoadKind | Unknown,
@@ -361,6 +393,7 @@ def read_actions_at(
         or (i > 0 and i + 1 == len(found) and found[i - 1][1].kind in _MANOEUVRES and at in on)
         or at in after_turn
     ]
+    found = _waited_turn(found, pieces, road)
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well
     backs = [at for at, a in found if a.kind is ActionKind.REVERSE]

@@ -223,3 +223,35 @@ def test_a_turn_from_a_heading_says_no_side() -> None:
 
 def test_a_turn_across_the_path_of_another_is_a_left_turn() -> None:
     assert partner("a sedan coming the other way turned across the path of the Zoox robotaxi.") is _K.TURN_LEFT
+
+
+JUNCTION = "A Zoox robotaxi was in a collision involving a sedan at the intersection of Pine Avenue and Birch Road. "
+
+
+def test_moving_off_after_waiting_to_turn_is_the_turn() -> None:
+    s = read(
+        JUNCTION + "The Zoox robotaxi was stopped at the stop line on Pine Avenue, waiting to turn left onto Birch "
+        "Road. Once the cross traffic cleared, the Zoox robotaxi began to move forward into the intersection. A "
+        "sedan made contact with the passenger side of the Zoox robotaxi."
+    )
+    assert last(by_id(s, "V1")) is _K.TURN_LEFT
+
+
+def test_still_standing_after_waiting_to_turn_is_a_stop() -> None:
+    s = read(
+        JUNCTION + "The Zoox robotaxi was stopped at the stop line on Pine Avenue, waiting to turn left onto Birch "
+        "Road. A sedan made contact with the rear of the Zoox robotaxi."
+    )
+    assert last(by_id(s, "V1")) is _K.STOP
+
+
+@pytest.mark.parametrize(
+    "stop",
+    [
+        "The Zoox robotaxi stopped before entering the intersection with Birch Road",
+        "The Zoox robotaxi came to a complete stop just before crossing Birch Road",
+    ],
+)
+def test_a_stop_before_a_move_is_short_of_it(stop: str) -> None:
+    s = read(JUNCTION + stop + ". A sedan made contact with the driver side rear of the Zoox robotaxi.")
+    assert last(by_id(s, "V1")) is _K.STOP
