@@ -143,7 +143,11 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
             # "departing a parking space", "pulled out of the parked position"
             r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
-            r"(?:curb(?:side)?|kerb|(?:[\w-]+ )?parking (?:space|spot|stall|position)|parked position)\b"
+            r"(?:curb(?:side)?|kerb|(?:[\w-]+ )?parking (?:space|spot|stall|position)|parked position"
+            # or any place at the road's edge where vehicles stand: "pulled away from the bus stop", "pulled out of
+            # the loading zone"
+            r"|loading (?:zone|dock|area|bay)|bus (?:stop|zone|bay)|(?:pick-?up|drop-?off|passenger) (?:zone|area)"
+            r"|taxi stand|shoulder)\b"
             # into the traffic it joined from the kerb or the shoulder: "merged into traffic from the curb"
             r"|\b(?:pull|merg|mov|accelerat|drove|driv|came|start)\w*\b[^.,;]{0,30}?\bfrom (?:the|a) "
             r"(?:curb(?:side)?|kerb|shoulder|(?:[\w-]+ )?parking (?:space|spot|stall))\b"

@@ -255,3 +255,18 @@ def test_still_standing_after_waiting_to_turn_is_a_stop() -> None:
 def test_a_stop_before_a_move_is_short_of_it(stop: str) -> None:
     s = read(JUNCTION + stop + ". A sedan made contact with the driver side rear of the Zoox robotaxi.")
     assert last(by_id(s, "V1")) is _K.STOP
+
+
+@pytest.mark.parametrize(
+    "move", ["a sedan pulled away from the bus stop.", "a sedan pulled out of a loading zone on the right."]
+)
+def test_leaving_a_place_at_the_road_edge_is_an_entry(move: str) -> None:
+    assert partner(move) is _K.DRIVE_INTO
+
+
+def test_one_placed_ahead_of_another_that_stopped_is_the_one_that_stopped() -> None:
+    s = read(
+        HEAD + "The Zoox robotaxi was traveling south on Pine Avenue. A sedan ahead of the Zoox robotaxi stopped "
+        "abruptly. The front of the Zoox robotaxi made contact with the rear of the sedan."
+    )
+    assert last(by_id(s, "V2")) is _K.STOP
