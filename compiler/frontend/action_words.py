@@ -42,8 +42,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # "reversed, and", "reversed at a low speed": the verb on its own (not "reversed direction")
             r"|\breversed\b(?! (?:its |the )?(?:direction|course|decision|order))"
             # "began to roll backwards", "moved backward", "rolled back into"
-            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|came|travel\w*|slid\w*)(?: \w+)? backwards?\b"
-            r"|\brolled back\b",
+            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|go(?:es|ing)?|came|travel\w*|slid\w*|dr[oi]ve\w*)"
+            r"(?: \w+)? (?:backwards?|rearwards?)\b"
+            r"|\broll(?:s|ed|ing)? back\b"
+            # the move as a noun ("a reverse maneuver", "its backing movement"), reverse parking, and the gear
+            # ("shifted to reverse", "engaged reverse gear"); "backed" ending its clause ("the car backed.")
+            r"|\b(?:reverse|reversing|backing)[- ](?:maneuver|manoeuvre|movement|motion|park\w*)\b"
+            r"|\b(?:shift\w*|engag\w*|select\w*) (?:(?:it|the \w+|its \w+) )?(?:to |in |into )?reverse\b"
+            r"|\bbacked(?=[.,;]| and\b| when\b| as\b| while\b)",
             re.I,
         ),
     ),

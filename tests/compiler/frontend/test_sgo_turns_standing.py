@@ -270,3 +270,21 @@ def test_one_placed_ahead_of_another_that_stopped_is_the_one_that_stopped() -> N
         "abruptly. The front of the Zoox robotaxi made contact with the rear of the sedan."
     )
     assert last(by_id(s, "V2")) is _K.STOP
+
+
+@pytest.mark.parametrize(
+    "move",
+    [
+        "a sedan was performing a reverse maneuver.",
+        "a sedan began a backing movement.",
+        "a sedan was reverse parking.",
+        "a sedan shifted to reverse.",
+        "a sedan engaged reverse gear.",
+        "a sedan moved rearward.",
+        "a sedan was going backwards.",
+        "a sedan began to roll back.",
+        "a sedan backed.",
+    ],
+)
+def test_backing_said_as_a_noun_a_gear_or_a_direction_is_the_reverse(move: str) -> None:
+    assert partner(move, REAR_HIT) is _K.REVERSE
