@@ -17,7 +17,9 @@ TURN_WORDS = (
     # (not a turn approached: "approached a right turn onto Oak Street" names the turn ahead, not yet begun)
     r"|(?<!approached a )(?<!approaching a )(?<!approaches a )"
     r"\b{0}[- ](?:hand[- ])?turn(?:ing|s)?\b(?![- ](?:only|lanes?|signal|arrow|bay|pocket))"
-    r"|\b(?:make|makes|made|making) a {0}\b(?![- ](?:lane|turn lane|hand lane))"
+    # "made a left", and the idioms that say the same: "took a right", "hung a left onto Elm Street"
+    r"|\b(?:make|makes|made|making|take|takes|took|taken|taking|hang|hangs|hung|hanging) a {0}\b"
+    r"(?![- ](?:lane|turn lane|hand lane))"
     # "went left at the intersection", "headed right onto Elm Street": a side taken at a junction is a turn
     r"|\b(?:went|go(?:es|ing)?|head(?:ed|ing)|proceed(?:ed|ing)|swung|cut) {0} (?:at|onto|into|on) (?:the|a|an) "
     r"(?:[\w-]+ ){{0,2}}(?:intersection|junction|street|road(?:way)?|avenue|drive(?:way)?|lot|ramp)\b"
@@ -63,8 +65,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # "reversed, and", "reversed at a low speed": the verb on its own (not "reversed direction")
             r"|\breversed\b(?! (?:its |the )?(?:direction|course|decision|order))"
             # "began to roll backwards", "moved backward", "rolled back into"
-            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|came|travel\w*|slid\w*)(?: \w+)? backwards?\b"
-            r"|\brolled back\b",
+            r"|\b(?:roll|rolled|rolling|rolls|mov\w*|drift\w*|went|go(?:es|ing)?|came|travel\w*|slid\w*|dr[oi]ve\w*)"
+            r"(?: \w+)? (?:backwards?|rearwards?)\b"
+            r"|\broll(?:s|ed|ing)? back\b"
+            # the move as a noun ("a reverse maneuver", "its backing movement"), reverse parking, and the gear
+            # ("shifted to reverse", "engaged reverse gear"); "backed" ending its clause ("the car backed.")
+            r"|\b(?:reverse|reversing|backing)[- ](?:maneuver|manoeuvre|movement|motion|park\w*)\b"
+            r"|\b(?:shift\w*|engag\w*|select\w*) (?:(?:it|the \w+|its \w+) )?(?:to |in |into )?reverse\b"
+            r"|\bbacked(?=[.,;]| and\b| when\b| as\b| while\b)",
             re.I,
         ),
     ),
@@ -80,8 +88,24 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             re.I,
         ),
     ),
-    (ActionKind.U_TURN, re.compile(r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b", re.I)),
+    # (a turn about made in parts, "a three-point turn", "a K-turn", is a U-turn too)
+    (
+        ActionKind.U_TURN,
+        re.compile(
+            r"\bu-?\s?turn|\bturn(?:ed|ing)? around\b|\b(?:three|3|multi|multiple)[- ]point turn\b|\bk-turn\b", re.I
+        ),
+    ),
     (ActionKind.TURN_LEFT, re.compile(TURN_WORDS.format("left"), re.I)),
+    # A turn across another's path or across the oncoming lanes: where traffic keeps right, only a left turn
+    # crosses them ("turned across the path of V1", "turning across oncoming traffic")
+    (
+        ActionKind.TURN_LEFT,
+        re.compile(
+            r"\bturn(?:ed|ing|s)? (?:\w+ )?across (?:the |its |[VP]\d's )(?:\w+ )?path\b"
+            r"|\bturn(?:ed|ing|s)? (?:\w+ )?across (?:the )?(?:oncoming|opposing) (?:traffic|lanes?)\b",
+            re.I,
+        ),
+    ),
     (ActionKind.TURN_RIGHT, re.compile(TURN_WORDS.format("right"), re.I)),
     (  # "a lane change" as a noun, not a lane named before the verb ("V2 in the left lane changed lanes")
         ActionKind.CHANGE_LANE,
@@ -165,7 +189,7 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
     (
         ActionKind.DRIVE_INTO,
         re.compile(
-            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private )?"
+            r"\bpull(?:ed|ing|s)? (?:out )?(?:of|from) (?:a|the|an|its) (?:private |[\w-]+ (?=parking))?"
             r"(?:drive(?:way)?|parking|lot|parked)"
             r"|\b(?:exit(?:ed|ing|s)?|leav(?:ing|es)|left|came out of|emerg(?:ed|ing|es) from|pull(?:ed|ing)? out of"
             r"|proceed(?:ed|ing)? out of"
@@ -173,6 +197,8 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"(?:drive(?:way)?|parking|lot|service station|gas station|business|alley|shopping|store|restaurant"
             r"|plaza|premises|property|residence|garage)"
             r"|\bpull(?:ed|ing|s)? (?:out )?(?:onto|into) the (?:road(?:way)?|street|highway|traffic|\w+ lane)\b"
+            r"|\bpull(?:ed|ing|s)? (?:out )?(?:in)?to (?:the )?(?:flow of )?traffic\b"
+            r"|\bpull(?:ed|ing|s)? (?:out )?(?:in)?to (?:the|a) (?:travel|traffic) lane\b"
             r"|\bfrom (?:a|the) (?:private )?(?:drive(?:way)?|parking (?:lot|garage|structure))\b"
             # into the flow of traffic, or onto the road itself, from wherever it stood off it: "attempting to
             # enter traffic", "maneuvered into the roadway" (not "into the intersection": that is crossing)
@@ -182,7 +208,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # from the curb, a parking space or the shoulder onto the road: "pulled away from the curb",
             # "departing a parking space", "pulled out of the parked position"
             r"|\b(?:pull|depart|leav|left|exit)\w* (?:away |out |off )?(?:from |of )?(?:the |a |an |its )?"
-            r"(?:curb(?:side)?|kerb|parking (?:space|spot|stall|position)|parked position)\b"
+            r"(?:curb(?:side)?|kerb|(?:[\w-]+ )?parking (?:space|spot|stall|position)|parked position"
+            # or any place at the road's edge where vehicles stand: "pulled away from the bus stop", "pulled out of
+            # the loading zone"
+            r"|loading (?:zone|dock|area|bay)|bus (?:stop|zone|bay)|(?:pick-?up|drop-?off|passenger) (?:zone|area)"
+            r"|taxi stand|shoulder)\b"
+            # into the traffic it joined from the kerb or the shoulder: "merged into traffic from the curb"
+            r"|\b(?:pull|merg|mov|accelerat|drove|driv|came|start)\w*\b[^.,;]{0,30}?\bfrom (?:the|a) "
+            r"(?:curb(?:side)?|kerb|shoulder|(?:[\w-]+ )?parking (?:space|spot|stall))\b"
             r"|\benter(?:ed|ing|s) the road(?:way)? from\b",
             re.I,
         ),
@@ -200,7 +233,14 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\b(?:mount|jump|hopp|climb)\w* (?:up )?(?:onto |over )?the (?:curb|kerb)\b"
             r"|\bup (?:onto|on) the (?:curb|kerb)\b"
             r"|\b(?:went|ran|drove|drifted|veered|swerved|careened|skidded|slid|travell?ed|rolled) (?:up )?onto the "
-            r"(?:sidewalk|curb|kerb|median|grass)\b",
+            r"(?:sidewalk|curb|kerb|median|grass)\b"
+            # off the road into a place to stand: "pulled into a parking space", "was pulling into a driveway"
+            r"|\bpull(?:ed|ing|s)? (?:forward )?(?:in)?to (?:a|an|the|its) (?:[\w-]+ ){0,2}?"
+            r"(?:parking (?:space|spot|stall|lot|garage)|driveway|space|spot|stall)\b"
+            # parking, said as under way: "was parallel parking", "attempting to park" (into a space: off the road)
+            r"|\b(?:was|were|is|while|began|started) (?:parallel[- ])?parking\b"
+            r"(?! (?:lots?|spaces?|spots?|stalls?|garages?|lanes?|structures?|areas?|brakes?|enforcement)\b)"
+            r"|\battempt(?:ed|ing|s)? to (?:parallel[- ])?park\b",
             re.I,
         ),
     ),
@@ -227,6 +267,23 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             # "brought the vehicle to a stop", "braked to a halt", "halted", "was sitting at the light"
             r"|\bto a (?:complete |full |sudden |quick |gradual |slow |controlled )?(?:stop|halt)\b|\bhalted\b"
             r"|\bidling\b"
+            # pulled over to the kerb is standing there: "was pulled over for a pick-up", "pulled over at the curb"
+            r"|\b(?:was|were|is|remained) pulled over\b"
+            r"|\bpull(?:ed|ing|s)? over (?:\w+ )?(?:at|to|against|along|near|beside|by|onto) (?:the|a) "
+            r"(?:[\w-]+ )?(?:curb|kerb|side|shoulder)\b"
+            # standing in a line of traffic or still, however said: "was queued behind traffic", "stood still",
+            # "was at rest", "held its position at the stop line"
+            r"|\b(?:was|were|sat|remained|stood|stayed) (?:\w+ )?queued\b|\b(?:standing|stood|remained|sat) still\b"
+            # (not "came to rest": where a vehicle ended after the crash)
+            r"|\b(?:was|were|remained|sat) at rest\b"
+            # "was at a complete stop", "was motionless", "paused at the stop sign", "was standing at the light",
+            # "sat at the red light", "was not moving" (a state, kept from the negations: see actions._NEGATED)
+            r"|\b(?:was|were|remained|sat) at a (?:complete |full |dead )?stop\b|\bmotionless\b|\bpaus(?:ed|ing)\b"
+            # (not "was in the left lane": where it was, moving or not)
+            r"|\b(?:stood|standing|sat|sitting) (?:at|in|behind) (?:the|a) (?:[\w-]+ ){0,2}"
+            r"(?:light|signal|lane|intersection|traffic|sign|line|crosswalk|queue)\b"
+            r"|\bnot (?:moving|in motion)\b"
+            r"|\b(?:held|holding|hold|maintained|maintaining) (?:its|their|his|her) (?:stopped )?position\b"
             r"|\bsitting (?:at|in) (?:the|a) (?:[\w-]+ ){0,2}(?:light|signal|lane|intersection|traffic|sign)\b",
             re.I,
         ),
@@ -244,6 +301,9 @@ PATTERNS: list[tuple[ActionKind, re.Pattern[str]]] = [
             r"|\bpass(?:ed|es)\b|\bovert(?:ook|akes)\b|\bproceed(?:ed|s)? to\b"
             # an attempt is the move under way when the impact cut it short: "attempted to pass V1 when ..."
             r"|\battempt(?:ed|ing|s)? to (?:pass|overtake|proceed)\b"
+            # "pulled out" with nowhere said: moving off from where it stood (not "pulled out to pass", "pulled out
+            # from behind V1": a move sideways)
+            r"|\bpull(?:ed|s|ing)? out\b(?! (?:of|onto|into|to|from|around|and pass|in front)\b)"
             # closing on another from behind (see DRIVING_ON)
             r"|" + DRIVING_ON.pattern,
             re.I,

@@ -16,11 +16,13 @@ import re
 
 from sovarc.compiler.frontend.action_words import DRIVING_ON, PATTERNS
 from sovarc.compiler.frontend.clauses import Piece
+from sovarc.compiler.frontend.compass_turns import compass_turns
 from sovarc.compiler.frontend.lanes import LANE_USE, lane_change_side
 from sovarc.compiler.frontend.resumed import resumed
 from sovarc.compiler.frontend.retold import under_way_at_impact
 from sovarc.compiler.frontend.sideless import names_a_lane_change, one_lane_change, said_in_piece
 from sovarc.compiler.frontend.timing import under_way_first
+from sovarc.compiler.frontend.turned import driven_on
 from sovarc.compiler.frontend.turnpath import crossed_in_turn, turned_into
 from sovarc.compiler.frontend.words import opposite
 from sovarc.dsl.ir import UNKNOWN, Action, ActionKind, Heading, RoadKind, Side, Unknown
@@ -79,8 +81,12 @@ _INTENT = re.compile(
     r"|prepar(?:ing|ed|es)|waiting|waited|await(?:ing|ed|s)?|in order|so as|prior"
     r"|(?:an? )?(?:opportunity|chance|opening|gap)"
     # "in anticipation of turning right", "in preparation for a left turn": what it was getting ready to do
-    r"|in (?:anticipation|preparation|advance))"
-    r"(?P<what> (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
+    r"|in (?:anticipation|preparation|advance)"
+    # in place for a move not begun: "queued to turn left", "lined up to make a right", "positioned to turn"
+    r"|queued|lined up|positioned|(?:getting )?ready|poised)"
+    # (with where it waited said first: "waiting at the red light to make a right turn")
+    r"(?P<what>(?: (?:at|in|behind) (?:the|a|an) (?:[\w-]+ ){0,3}?(?:light|signal|sign|line|lane|intersection))?"
+    r" (?:to|on|for|of)\b(?:[^.,;]*?)" + _CLAUSE + ")",
     re.I,
 )
 # A purpose said after slowing or signalling ("slowed to turn left into a driveway") is what the driver meant
@@ -112,11 +118,29 @@ _QUALIFIED = re.compile(
     r"| (?:[\w-]+ )?(?:vehicles?|cars?|traffic|trucks?|bus(?:es)?|vans?|suvs?|sedans?|pickups?)\b)",
     re.I,
 )
-_INTENDED_MOVE = re.compile(r"\bintended (?:\w+ ){0,2}(?:turn|u-turn|lane change)\b", re.I)
+# A move meant or signalled is not made: "its intended left turn", "signaled a left turn", "indicated a right turn".
+_INTENDED_MOVE = re.compile(
+    r"\b(?:intended|signal(?:l)?(?:ed|ing|s)?(?: for)?|indicat(?:ed|ing|es)) (?:\w+ ){0,2}"
+    r"(?:turn|u-turn|lane change)\b",
+    re.I,
+)
+# What is awaited is not yet done, and "await" takes it as its object: "awaiting a green arrow for a left turn".
+# A stop before a move ("stopped before entering the intersection", "came to a stop before making the turn") says
+# where it stopped: short of the move, not yet made (a move made after the stop is told again: "then entered").
+_STOPPED_BEFORE = re.compile(
+    r"\b(?P<lead>(?:stop(?:ped|s)?|halt(?:ed|s)?|to a (?:complete |full )?(?:stop|halt))(?: \w+){0,4}? before)"
+    r"(?P<what> \w+ing\b[^.,;]*?" + _CLAUSE + ")",
+    re.I,
+)
+_A_MOVE = re.compile(r"\b(?:turn|u-turn|lane change|merge|pull|pass|overtake|reverse|back up)", re.I)
+_AWAITED = re.compile(r"\b(?P<lead>await(?:ing|ed|s)?)(?P<what> (?!(?:to|on|for|of)\b)[^.,;]*?" + _CLAUSE + ")", re.I)
 # A negated verb is no action: "had not yet started to turn", "did not stop", "never slowed".
 # "failed to stop", "was unable to stop", "without stopping" deny the event as "not" does.
+# (not "was not moving": standing, a state said by denying motion)
 _NEGATED = re.compile(
-    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?: yet| even)?[^.,;]*?" + _CLAUSE, re.I
+    r"(?:\b(?:not|never|failed|fails|failing|unable|without)\b|n't\b)(?! (?:moving|in motion)\b)(?: yet| even)?"
+    r"[^.,;]*?" + _CLAUSE,
+    re.I,
 )
 _EVASIVE = re.compile(r"[^.,;]*\b(?:to avoid|evasive)\b[^.,;]*", re.I)
 # "intending to go straight through the intersection": the vehicle held its course (see the module's note)
@@ -165,6 +189,11 @@ def what_was_done(text: str) -> str:
     text = LANE_USE.sub(" ", text)
     text = _PURPOSE.sub(lambda m: m.group("lead"), text)
     text = _AROUND_BY.sub(lambda m: m.group("lead"), text)
+    # (blanked, not cut, so that what is read after it keeps its place; only when a move is awaited)
+    text = _STOPPED_BEFORE.sub(lambda m: m.group("lead") + " " * len(m.group("what")), text)
+    text = _AWAITED.sub(
+        lambda m: m.group("lead") + " " * len(m.group("what")) if _A_MOVE.search(m.group("what")) else m.group(0), text
+    )
     return _INTENT.sub(intent, text)
 
 
@@ -239,6 +268,7 @@ def _found(
                 found.append((at, Action(act, to)))
         if road is RoadKind.STRAIGHT:
             found += [(piece.at + m.start(), Action(ActionKind.DRIVE_INTO)) for m in _ENTERED_ROAD.finditer(done)]
+        found += [(piece.at + at, turn) for at, turn in compass_turns(done, heading)]  # "turned onto eastbound X"
         said += done + " "
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
     if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
@@ -296,6 +326,30 @@ def _carried_out(
     return [*[(w, a) for w, a in found if a.kind is not ActionKind.GO_ACROSS], (at, Action(turn))]
 
 
+def _waited_turn(
+    found: list[tuple[int, Action]], pieces: list[Piece], road: RoadKind | Unknown
+) -> list[tuple[int, Action]]:
+    """At a junction, one that stopped waiting or preparing to turn ("waiting to turn right onto Elm Street") and
+    then moved off ("When the light turned green, V1 proceeded") made the turn it waited to make: moving off is
+    that turn, the last thing it did. Not while it stood ("remained stopped"), nor when another move follows."""
+    if road not in (RoadKind.INTERSECTION, RoadKind.T_JUNCTION) or len(found) < 2:
+        return found
+    (_, before), (moved, last) = found[-2], found[-1]
+    if before.kind is not ActionKind.STOP or last.kind is not ActionKind.FOLLOW_LANE:
+        return found
+    waited = [
+        (p.at + i.start(), m.group(1).lower())
+        for p in pieces
+        for i in _INTENT.finditer(p.text)
+        if not _PLAN.match(i.group("lead"))
+        for m in _MEANT_TURN.finditer(i.group("what"))
+    ]
+    if len({side for _, side in waited}) != 1 or min(at for at, _ in waited) > moved:
+        return found
+    turn = ActionKind.TURN_LEFT if waited[0][1] == "left" else ActionKind.TURN_RIGHT
+    return [*found[:-1], (moved, Action(turn))]
+
+
 def read_actions(
     pieces: list[Piece],
     road: RoadKind | Unknown,
@@ -347,6 +401,16 @@ def read_actions_at(
         for i, (at, a) in enumerate(found)
         if a.kind is not ActionKind.GO_ACROSS or i == 0 or found[i - 1][1].kind is not ActionKind.RETROGRADE
     ]
+    # One parked that moves off ("began to pull out", "pulled out") enters the road from where it stood.
+    found = [
+        (at, Action(ActionKind.DRIVE_INTO))
+        if a.kind is ActionKind.FOLLOW_LANE and i > 0 and found[i - 1][1].kind is ActionKind.PARKED
+        else (at, a)
+        for i, (at, a) in enumerate(found)
+    ]
+    turned = driven_on(found, pieces)  # a turn, then along the road turned onto (see turned.py)
+    after_turn = {at for at, _ in turned[len(found) :]}
+    found = turned
     # Driving on is said only of a vehicle that moved off again after a stop (see PATTERNS), and only when it
     # did nothing else next: moving off into a turn is the turn. Or of one closing on another from behind after
     # its turn or lane change, the last thing it did (see DRIVING_ON).
@@ -361,7 +425,9 @@ def read_actions_at(
             and (i + 1 == len(found) or found[i + 1][1].kind in (ActionKind.STOP, ActionKind.FOLLOW_LANE))
         )
         or (i > 0 and i + 1 == len(found) and found[i - 1][1].kind in _MANOEUVRES and at in on)
+        or at in after_turn
     ]
+    found = _waited_turn(found, pieces, road)
     # "reversed out of the driveway", "began reversing further out of a parking spot": leaving a place backwards
     # is the reverse, not a drive into the road as well
     backs = [at for at, a in found if a.kind is ActionKind.REVERSE]

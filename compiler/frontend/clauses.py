@@ -121,13 +121,26 @@ def _fronted_main(sentence: str, at: int) -> bool:
     )
 
 
+# A road user placed by its subject's place ("V2 ahead of V1 stopped abruptly"): "stopped" after it is the
+# subject's verb, not a state said of the one placed by (as in "approached V1 stopped in the lane").
+_PLACED_BY = re.compile(r"\b[VP]\d (?:directly |immediately )?(?:ahead of|in front of|behind|beside|next to) $")
+
+
+def _subject_stopped(sentence: str, start: int, end: int) -> bool:
+    return bool(_PLACED_BY.search(sentence[:start]) and re.match(r" stopped\b", sentence[end:]))
+
+
 def _events(sentence: str, ids: list[str], others: re.Pattern[str] | None) -> list[tuple[int, tuple[str, ...]]]:
     """Where a piece starts in the sentence, and whose it is; `others` names the road users met before."""
     found: list[tuple[int, tuple[str, ...]]] = []
     for m in _NAME.finditer(sentence):
         if m.group() in ids and (
             not is_object(sentence, m.start())
-            or (_ASIDE.match(sentence, m.end()) and not _fronted_main(sentence, m.end()))
+            or (
+                _ASIDE.match(sentence, m.end())
+                and not _fronted_main(sentence, m.end())
+                and not _subject_stopped(sentence, m.start(), m.end())
+            )
         ):
             found.append((m.start(), (m.group(),)))
     vehicles = tuple(pid for pid in ids if pid.startswith("V"))

@@ -26,7 +26,13 @@ from sovarc.compiler.frontend.kinds import stated_kinds
 from sovarc.compiler.frontend.lanes import per_direction, placed_lane
 from sovarc.compiler.frontend.precrash import precrash_wrong_way
 from sovarc.compiler.frontend.situation import wrong_side
-from sovarc.compiler.frontend.standing import introduced_doing, moving_met_standing, standing_struck, still_at_impact
+from sovarc.compiler.frontend.standing import (
+    introduced_doing,
+    moving_met_standing,
+    standing_struck,
+    still_at_impact,
+    stood_at_impact,
+)
 from sovarc.compiler.frontend.text import (
     Prepared,
     describes_impact,
@@ -429,6 +435,8 @@ def extract(text: str, name: str, report_path: str | None = None, prepared: Prep
         ]
         if isinstance(actions, tuple) and impact >= 0 and still_at_impact(sents[impact], pid):
             actions = _ending_stopped(actions)
+        elif isinstance(actions, Unknown) and impact >= 0 and (stood := stood_at_impact(sents[impact], pid)):
+            actions = (Action(stood),)  # nothing told before, but "struck the stationary V1": it stood there
         if isinstance(actions, Unknown) and crash.striker == pid and crash.type is CrashType.REAR_END:
             actions = (Action(ActionKind.FOLLOW_LANE),)  # its front drove into the other's rear: it drove along
         if pid in wrong_way and isinstance(actions, tuple) and ActionKind.RETROGRADE not in [a.kind for a in actions]:

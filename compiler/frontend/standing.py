@@ -36,6 +36,13 @@ def still_at_impact(sentence: str, pid: str) -> bool:
     )
 
 
+def stood_at_impact(sentence: str, pid: str) -> ActionKind | None:
+    """How the impact sentence says the participant stood, if it does (see `still_at_impact`): parked, or stopped."""
+    if not still_at_impact(sentence, pid):
+        return None
+    return ActionKind.PARKED if re.search(rf"\bparked {pid}\b|\b{pid} \w+ parked\b", sentence) else ActionKind.STOP
+
+
 def standing_struck(people: list[Participant], crash: Crash, sentence: str) -> Crash:
     """A vehicle that stood still at the impact struck nobody: the striker is the one that moved into it,
     whichever of its parts the sentence names first (the crash readers take a named front for the striking
@@ -123,32 +130,47 @@ _LEAVING = (
 )
 
 
+# What the words that introduce a road user say it was doing, first match first: a participle used as an adjective
+# ("a reversing SUV", "a left-turning car", "a stopped van", "an approaching bus") or put after the name.
+_INTRODUCED: tuple[tuple[ActionKind, re.Pattern[str]], ...] = (
+    (ActionKind.REVERSE, re.compile(r"\b(?:reversing|backing)\b", re.I)),
+    (ActionKind.U_TURN, re.compile(r"\bu-?turning\b", re.I)),
+    (ActionKind.TURN_LEFT, re.compile(r"\bleft[- ]turning\b|\bturning left\b", re.I)),
+    (ActionKind.TURN_RIGHT, re.compile(r"\bright[- ]turning\b|\bturning right\b", re.I)),
+    (ActionKind.PARKED, re.compile(r"\bparked\b", re.I)),
+    (ActionKind.STOP, re.compile(r"\b(?:stationary|stopped|standing|idling|queued)\b", re.I)),
+    (ActionKind.FOLLOW_LANE, _MOVING),
+)
+
+
 def introduced_doing(
     people: list[Participant], words: dict[str, str], named: str, spots: list[Spot]
 ) -> list[Participant]:
     """A vehicle the report says nothing of before the impact, introduced as parked ("an unoccupied parked
-    passenger vehicle") or moving ("an approaching van", "the trailing bus"): the words that introduce a road
-    user state what it was doing, so it stood parked, or drove along its lane, or drove along and left it ("a
-    merging SUV", "a wrong-way sedan"). `words` are the words each party
-    numbered by rule was first named by (see `names.parties`)."""
+    passenger vehicle"), standing ("a stationary SUV"), turning ("a left-turning van"), reversing ("a reversing
+    pickup"), moving ("an approaching van", "the trailing bus") or leaving its lane ("a merging SUV", "a wrong-way
+    sedan"): the words that introduce a road user state
+    what it was doing (see `_INTRODUCED`). `words` are the words each party numbered by rule was first named by
+    (see `names.parties`)."""
     out = []
     for p in people:
         first = re.search(rf"\b{p.id}\b", named)
         if p.role is not Role.VEHICLE or not isinstance(p.actions, Unknown) or first is None:
             out.append(p)
             continue
-        said = words.get(p.id, "")
+        # the words before its name, and a state put after it ("V2 parked along the curb", "V2, which was turning
+        # left,"; not "V2 stopped", a verb as much as a state)
+        after = re.findall(
+            rf"\b{p.id}(?:,? (?:that|which) (?:was|were|had been) (\w+(?:[- ]\w+)?)"
+            r"| (parked|stationary|standing|idling|queued)\b)",
+            named,
+        )
+        said = " ".join([words.get(p.id, ""), *(w for pair in after for w in pair)])
         if leaving := next((k for pattern, k in _LEAVING if pattern.search(said)), None):
             spots.append((f"{p.id}.actions[2]", "named", *first.span()))
             out.append(replace(p, actions=(Action(ActionKind.FOLLOW_LANE), Action(leaving))))
             continue
-        kind = (
-            ActionKind.PARKED
-            if re.search(r"\bparked\b", said, re.I)
-            else ActionKind.FOLLOW_LANE
-            if _MOVING.search(said)
-            else None
-        )
+        kind = next((k for k, pattern in _INTRODUCED if pattern.search(said)), None)
         if kind is None:
             out.append(p)
             continue

@@ -13,6 +13,7 @@ from sovarc.compiler.frontend.labels import drivers_vehicles, police_labels
 from sovarc.compiler.frontend.lexicon import IMPACT_NOUNS, IMPACT_VERBS, IMPACT_WORD, Form, forms, striking, struck
 from sovarc.compiler.frontend.names import PLACE, THING, parties
 from sovarc.compiler.frontend.ordinals import ordinal_names
+from sovarc.compiler.frontend.participles import moves_after_nouns
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
 from sovarc.compiler.frontend.spelling import spell_out
 from sovarc.compiler.frontend.words import number
@@ -237,7 +238,7 @@ def prepare_report(text: str) -> Prepared:
     """Every participant under one name: V1/P1 numbering (the report's own, its labels, or the rule for reports
     that name none: see `names`), makes and body words, an unnumbered parked victim; with the naming's note and
     the words each party numbered by rule was named by."""
-    labelled, note, words = parties(number_vehicles(spell_out(sentence_case(text))))
+    labelled, note, words = parties(number_vehicles(moves_after_nouns(spell_out(sentence_case(text)))))
     labelled = in_past(labelled)
     return Prepared(name_parked(resolve_aliases(normalize_names(labelled))), labelled, note, words)
 
