@@ -126,7 +126,9 @@ def test_a_turn_into_the_other_directions_lanes_is_the_turn() -> None:
 
 def test_a_lane_crossed_into_as_a_turn_swings_wide_is_the_turn() -> None:
     s = read(
-        _HEAD + "The Waymo AV was stopped facing north in the left lane of Pine Avenue at a red light. A heavy truck "
+        # the overview names the partner the narrative tells of (one that names another is a different report)
+        _HEAD.replace("a sedan", "a heavy truck")
+        + "The Waymo AV was stopped facing north in the left lane of Pine Avenue at a red light. A heavy truck "
         "in the right lane proceeded to make a right turn onto Oak Street. As the heavy truck attempted the right "
         "turn, its trailer crossed into the adjacent lane and made contact with the front of the Waymo AV."
     )
