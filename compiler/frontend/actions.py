@@ -223,8 +223,8 @@ def _found(
     meant = _meant_turn(pieces)
     found: list[tuple[int, Action]] = []
     said = ""  # what was said of it before this piece: where its lane was
-    for piece in pieces:
-        done = what_was_done(piece.text)
+    dones = [what_was_done(piece.text) for piece in pieces]
+    for piece, done in zip(pieces, dones, strict=True):
         if near:
             found += [(piece.at + m.start(), Action(ActionKind.GO_ACROSS)) for m in _STRAIGHT.finditer(done)]
         if meant is not None:
@@ -272,16 +272,16 @@ def _found(
         said += done + " "
     # Into the other direction's lanes is wrong-way driving, unless the vehicle turned across them.
     if not isinstance(heading, Unknown) and not any(a.kind in _MANOEUVRES for _, a in found):
-        for piece in pieces:
+        for piece, done in zip(pieces, dones, strict=True):
             found += [
                 (piece.at + m.start(), Action(ActionKind.RETROGRADE))
-                for m in _INTO_LANES.finditer(what_was_done(piece.text))
+                for m in _INTO_LANES.finditer(done)
                 if next(g for g in m.groups() if g).lower() == opposite(heading).value
             ]
-    for piece in pieces:
+    for piece, done in zip(pieces, dones, strict=True):
         found += [
             (piece.at + m.start(), Action(ActionKind.RETROGRADE))
-            for m in _AGAINST_LANES.finditer(what_was_done(piece.text))
+            for m in _AGAINST_LANES.finditer(done)
             if opposite(Heading(m.group(1).lower())) == Heading(m.group(2).lower())
         ]
     if meant is not None:  # one meant to turn and drove into the junction: that is its turn

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from sovarc.compiler.frontend.kinds import kind_named
+from sovarc.compiler.frontend.overview import only_other
 
 _BARE = re.compile(r"the vehicle", re.I)
 # Words after a noun that pick one road user out ("the vehicle behind V1", "the vehicle that had been following")
@@ -23,10 +24,9 @@ def name_antecedent(text: str, words_of: dict[str, str], users: re.Pattern[str])
     """The one other party, named only as "the vehicle", is the road user introduced last before its first
     mention (a match of `users` said with "a" or "an", of a kind): that introduction is its id, and its noun is
     added to its words."""
-    others = [pid for pid in words_of if pid != "V1" and re.search(r"\b" + pid + r"\b", text)]
-    if len(others) != 1 or not _BARE.fullmatch(words_of[others[0]]):
+    pid = only_other(text, words_of)
+    if pid is None or not _BARE.fullmatch(words_of[pid]):
         return text, words_of
-    pid = others[0]
     first = re.search(r"\b" + pid + r"\b", text)
     assert first is not None
     if _PICKED.match(text, first.end()):  # "the vehicle behind V1", "the vehicle that struck": a new one

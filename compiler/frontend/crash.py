@@ -23,6 +23,7 @@ from sovarc.compiler.frontend.lexicon import (
     striking,
     struck,
 )
+from sovarc.compiler.frontend.words import PLACE_WORDS
 from sovarc.dsl.ir import UNKNOWN, Crash, CrashType
 
 _V = r"(?:[VP]\d)"
@@ -425,7 +426,7 @@ def _pushed_into_v1(sentence: str, crash: Crash, tower: str | None) -> Crash:
 # the other; where the first names V1 only as where another was (see `names.PLACE`), V1's is the one after it.
 _THEN_AND = re.compile(r",? and (?=(?:then )?(?:the |its )?\w)|; ", re.I)
 _WHEN = re.compile(r"^(?:\w+ )?(?:after|when|as|while|before|once)\b[^,]*, ", re.I)
-V1_PLACED = re.compile(r"\b(?:behind|ahead of|in front of|next to|beside|alongside) V1\b")
+V1_PLACED = re.compile(r"\b(?:" + PLACE_WORDS + r") V1\b")
 
 
 def own_meeting(sentence: str) -> str:

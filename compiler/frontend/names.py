@@ -20,6 +20,7 @@ from sovarc.compiler.frontend.lexicon import BEFORE_OBJECT, INTO_ANYTHING, MEETI
 from sovarc.compiler.frontend.overview import SUMMARY, name_overview, overview_users
 from sovarc.compiler.frontend.roles import BARE_MAKES, MAKE, MAKES, bare, narrator, partner
 from sovarc.compiler.frontend.sentences import narrative_start, sentences
+from sovarc.compiler.frontend.words import PLACE_WORDS
 
 # Words that qualify a road user without being one: "a dark colored Nissan passenger car".
 _STOP = r"(?!(?:of|the|a|an|and|or|with|to|in|on|at|by|from|for|that|which|who|was|were|is|it|its)\b)"
@@ -92,14 +93,12 @@ _FLEET_MODEL = re.compile(
 _LABEL = re.compile(r"\s*\(\s*[\"']?(?:vehicle|v|unit)\s*[-#]?\s*(?:no\.?\s*)?(\d)[\"']?\s*\)", re.I)
 _LABELLED = re.compile(r"\b(?:(?:an?|the|our) )?(" + _MODS + r"[\w.'-]+)" + _LABEL.pattern, re.I)
 # ("the contact area", "the point of impact area": a place on a body, the name of a form's field, not a meeting)
-# (not "a collision": a summary's, `_SUMMARY`, read only where no sentence says how the parties met)
+# (not "a collision": a summary's, `overview.SUMMARY`, read only where no sentence says how the parties met)
 _IMPACT = re.compile(r"\b(?:" + stems(MEETING_NOUNS) + "|" + INTO_ANYTHING + r")\b", re.I)
 # The colours a road user is told apart by ("a white sedan" and "a black sedan" are two).
 COLOUR = re.compile(
     r"\b(?:white|black|silver|gr[ae]y|red|blue|green|yellow|orange|brown|gold|tan|beige|maroon|purple)\b", re.I
 )
-# A summary that only says who was in the collision: the impact sentence when no sentence says how they met.
-_SUMMARY = SUMMARY
 _OCCURRED = re.compile(r"\b(?:collision|crash|impact) (?:\w+ )?(?:occurred|happened|took place)\b", re.I)
 # Things a vehicle can hit that the IR has no role for.
 THING = re.compile(
@@ -259,7 +258,7 @@ def _head(m: re.Match[str]) -> str:
 
 # Prepositions of place: what follows says where a road user was ("behind the heavy truck", "between V1 and a
 # parked car"), not who met whom.
-PLACE = re.compile(r"\b(?:behind|ahead of|in front of|next to|beside|alongside|between(?: \S+ and)?)\s+$", re.I)
+PLACE = re.compile(r"\b(?:" + PLACE_WORDS + r"|between(?: \S+ and)?)\s+$", re.I)
 
 
 def _others(text: str) -> list[tuple[str, str]]:
@@ -267,7 +266,7 @@ def _others(text: str) -> list[tuple[str, str]]:
     sents = sentences(text)
     impacts = [i for i, s in enumerate(sents) if _IMPACT.search(s) and re.search(r"\bV1\b|\bit\b|\bthem\b", s)]
     impacts = [i for i in impacts if i >= narrative_start(sents)] or impacts  # (not a filing's note)
-    summaries = [i for i, s in enumerate(sents) if _SUMMARY.search(s) and re.search(r"\bV1\b", s)]
+    summaries = [i for i, s in enumerate(sents) if SUMMARY.search(s) and re.search(r"\bV1\b", s)]
     # a meeting said only as a collision that happened to V1 ("Though V1 had nearly stopped, a collision still
     # occurred, causing damage to the rear of the passenger vehicle"): its other party is named there or before
     occurred = [i for i, s in enumerate(sents) if _OCCURRED.search(s) and re.search(r"\bV1\b", s)]

@@ -18,6 +18,12 @@ from sovarc.compiler.frontend.sentences import sentences
 SUMMARY = re.compile(r"\bcollision (?:with|involving)\b|\binvolved in a (?:collision|crash)\b", re.I)
 
 
+def only_other(text: str, words_of: dict[str, str]) -> str | None:
+    """The id of the one party besides V1 that `text` names, if only one is named."""
+    others = [pid for pid in words_of if pid != "V1" and re.search(r"\b" + pid + r"\b", text)]
+    return others[0] if len(others) == 1 else None
+
+
 def overview_users(sents: list[str], users: re.Pattern[str]) -> list[re.Match[str]]:
     """The road users (matches of `users`) the first overview naming V1 names after its verb ("involving a
     passenger car"), unless it names them as several ("two passenger vehicles", which `users` does not match)."""
@@ -30,8 +36,8 @@ def overview_users(sents: list[str], users: re.Pattern[str]) -> list[re.Match[st
 def name_overview(text: str, words_of: dict[str, str], users: re.Pattern[str]) -> tuple[str, dict[str, str]]:
     """The one other party, told with no kind ("a vehicle", "the other vehicle"), is the road user the overview
     names, when it names one with a kind: that phrase there is the party's id, and its words say the kind."""
-    others = [pid for pid in words_of if pid != "V1" and re.search(r"\b" + pid + r"\b", text)]
-    if len(others) != 1 or not others[0].startswith("V") or kind_named(words_of[others[0]]) is not None:
+    pid = only_other(text, words_of)
+    if pid is None or not pid.startswith("V") or kind_named(words_of[pid]) is not None:
         return text, words_of
     found = overview_users(sentences(text), users)
     if len(found) != 1 or kind_named(found[0].group()) is None:
@@ -40,7 +46,6 @@ def name_overview(text: str, words_of: dict[str, str], users: re.Pattern[str]) -
     at = text.find(m.string)
     if at < 0:
         return text, words_of
-    pid = others[0]
     # (the noun alone beside its words: "a vehicle (passenger car)"; they still say what it was doing)
     assert noun is not None
     said = f"{words_of[pid]} ({m.group()[noun[1] : noun[2]]})"

@@ -1,4 +1,5 @@
-"""Words every reader of the front end counts and steers by: number words, ordinals and the compass.
+"""Words every reader of the front end counts and steers by: number words, ordinals, the compass and
+the prepositions of place.
 
 One table each: the readers' patterns say which of the words they accept ("lane one", "two lanes in
 each direction", "Vehicle three"); the values are the same wherever a word is read.
@@ -12,6 +13,9 @@ from sovarc.dsl.ir import Heading
 NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "single": 1}
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 COMPASS = tuple(Heading)  # north, east, south, west: clockwise, a quarter turn apart
+# Prepositions of place: the road user after one says where another was ("behind the heavy truck", "next to V1"),
+# not who met whom.
+PLACE_WORDS = r"behind|ahead of|in front of|next to|beside|alongside"
 
 
 def number(word: str) -> int:
